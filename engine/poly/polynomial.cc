@@ -1,0 +1,262 @@
+#include "engine/poly/polynomial.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace pcsg {
+namespace {
+
+// Exponent table and reverse index, built once.
+struct MonomialTable {
+  std::array<std::array<int, 3>, Polynomial::kNumCoeffs> exps{};
+  int idx[5][5][5];
+  MonomialTable() {
+    int n = 0;
+    for (int d = 0; d <= Polynomial::kMaxDegree; ++d)
+      for (int i = d; i >= 0; --i)
+        for (int j = d - i; j >= 0; --j) {
+          const int k = d - i - j;
+          exps[n] = {i, j, k};
+          idx[i][j][k] = n++;
+        }
+  }
+};
+
+const MonomialTable& table() {
+  static const MonomialTable t;
+  return t;
+}
+
+}  // namespace
+
+int Polynomial::index(int i, int j, int k) {
+  if (i < 0 || j < 0 || k < 0 || i + j + k > kMaxDegree) return -1;
+  return table().idx[i][j][k];
+}
+
+std::array<int, 3> Polynomial::exponents(int idx) { return table().exps[idx]; }
+
+Polynomial Polynomial::constant(double c) {
+  Polynomial p;
+  p.coeffs_[0] = c;
+  return p;
+}
+
+Polynomial Polynomial::variable(int axis) {
+  Polynomial p;
+  int e[3] = {0, 0, 0};
+  e[axis] = 1;
+  p.coeffs_[index(e[0], e[1], e[2])] = 1.0;
+  return p;
+}
+
+int Polynomial::degree() const {
+  int deg = -1;
+  for (int n = 0; n < kNumCoeffs; ++n)
+    if (coeffs_[n] != 0.0) {
+      const auto& e = table().exps[n];
+      deg = std::max(deg, e[0] + e[1] + e[2]);
+    }
+  return deg;
+}
+
+double Polynomial::max_abs_coeff() const {
+  double m = 0;
+  for (double c : coeffs_) m = std::max(m, std::abs(c));
+  return m;
+}
+
+Polynomial Polynomial::operator+(const Polynomial& o) const {
+  Polynomial r;
+  for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] + o.coeffs_[n];
+  return r;
+}
+
+Polynomial Polynomial::operator-(const Polynomial& o) const {
+  Polynomial r;
+  for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] - o.coeffs_[n];
+  return r;
+}
+
+Polynomial Polynomial::operator-() const { return *this * -1.0; }
+
+Polynomial Polynomial::operator*(double s) const {
+  Polynomial r;
+  for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] * s;
+  return r;
+}
+
+Polynomial Polynomial::operator*(const Polynomial& o) const {
+  const int da = degree(), db = o.degree();
+  if (da < 0 || db < 0) return Polynomial();
+  if (da + db > kMaxDegree)
+    throw std::domain_error("degree " + std::to_string(da + db) + " exceeds the maximum " +
+                            std::to_string(kMaxDegree));
+  Polynomial r;
+  const auto& t = table();
+  for (int a = 0; a < kNumCoeffs; ++a) {
+    if (coeffs_[a] == 0.0) continue;
+    for (int b = 0; b < kNumCoeffs; ++b) {
+      if (o.coeffs_[b] == 0.0) continue;
+      const int i = t.exps[a][0] + t.exps[b][0], j = t.exps[a][1] + t.exps[b][1],
+                k = t.exps[a][2] + t.exps[b][2];
+      r.coeffs_[index(i, j, k)] += coeffs_[a] * o.coeffs_[b];
+    }
+  }
+  return r;
+}
+
+Polynomial Polynomial::pow(int n) const {
+  if (n < 0) throw std::domain_error("negative power " + std::to_string(n));
+  const int d = degree();
+  if (d > 0 && d * n > kMaxDegree)
+    throw std::domain_error("degree " + std::to_string(d * n) + " exceeds the maximum " +
+                            std::to_string(kMaxDegree));
+  Polynomial r = constant(1.0);
+  for (int k = 0; k < n; ++k) r = r * *this;
+  return r;
+}
+
+void Polynomial::evaluate(const Eigen::Vector3d& p, double* value, Eigen::Vector3d* gradient,
+                          Eigen::Matrix3d* hessian) const {
+  // Powers p^0..p^4 of each coordinate; derivative of x^i is i x^(i-1), second i(i-1) x^(i-2).
+  double pw[3][kMaxDegree + 1];
+  for (int a = 0; a < 3; ++a) {
+    pw[a][0] = 1.0;
+    for (int e = 1; e <= kMaxDegree; ++e) pw[a][e] = pw[a][e - 1] * p[a];
+  }
+  auto P = [&](int a, int e) { return e < 0 ? 0.0 : pw[a][e]; };
+  double v = 0;
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  const auto& t = table();
+  for (int n = 0; n < kNumCoeffs; ++n) {
+    const double c = coeffs_[n];
+    if (c == 0.0) continue;
+    const int e[3] = {t.exps[n][0], t.exps[n][1], t.exps[n][2]};
+    if (value) v += c * P(0, e[0]) * P(1, e[1]) * P(2, e[2]);
+    if (gradient || hessian) {
+      for (int a = 0; a < 3; ++a) {
+        if (e[a] == 0) continue;
+        double term = c * e[a];
+        for (int b = 0; b < 3; ++b) term *= P(b, b == a ? e[b] - 1 : e[b]);
+        g[a] += term;
+      }
+    }
+    if (hessian) {
+      for (int a = 0; a < 3; ++a)
+        for (int b = a; b < 3; ++b) {
+          int f[3] = {e[0], e[1], e[2]};
+          double term = c;
+          term *= f[a];
+          f[a] -= 1;
+          term *= f[b];
+          f[b] -= 1;
+          if (term == 0.0) continue;
+          term *= P(0, f[0]) * P(1, f[1]) * P(2, f[2]);
+          H(a, b) += term;
+          if (a != b) H(b, a) += term;
+        }
+    }
+  }
+  if (value) *value = v;
+  if (gradient) *gradient = g;
+  if (hessian) *hessian = H;
+}
+
+double Polynomial::value(const Eigen::Vector3d& p) const {
+  double v;
+  evaluate(p, &v, nullptr, nullptr);
+  return v;
+}
+
+Eigen::Vector3d Polynomial::gradient(const Eigen::Vector3d& p) const {
+  Eigen::Vector3d g;
+  evaluate(p, nullptr, &g, nullptr);
+  return g;
+}
+
+Eigen::Matrix3d Polynomial::hessian(const Eigen::Vector3d& p) const {
+  Eigen::Matrix3d H;
+  evaluate(p, nullptr, nullptr, &H);
+  return H;
+}
+
+std::array<double, 5> Polynomial::along_line(const Eigen::Vector3d& p,
+                                             const Eigen::Vector3d& d) const {
+  // Substitute x = p + t d: each coordinate is a degree-1 polynomial in t; multiply out.
+  std::array<double, 5> out{};
+  const auto& tb = table();
+  for (int n = 0; n < kNumCoeffs; ++n) {
+    const double c = coeffs_[n];
+    if (c == 0.0) continue;
+    std::array<double, 5> acc{};
+    acc[0] = c;
+    int deg = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int e = 0; e < tb.exps[n][a]; ++e) {
+        // acc *= (p[a] + d[a] t)
+        for (int k = deg + 1; k >= 0; --k)
+          acc[k] = acc[k] * p[a] + (k > 0 ? acc[k - 1] * d[a] : 0.0);
+        ++deg;
+      }
+    for (int k = 0; k < 5; ++k) out[k] += acc[k];
+  }
+  return out;
+}
+
+Polynomial Polynomial::substituted(const Eigen::Matrix3d& M, const Eigen::Vector3d& c) const {
+  Polynomial lin[3];
+  for (int a = 0; a < 3; ++a) {
+    lin[a] = constant(c[a]);
+    for (int b = 0; b < 3; ++b) lin[a] = lin[a] + variable(b) * M(a, b);
+  }
+  Polynomial r;
+  const auto& t = table();
+  for (int n = 0; n < kNumCoeffs; ++n) {
+    if (coeffs_[n] == 0.0) continue;
+    r = r + lin[0].pow(t.exps[n][0]) * lin[1].pow(t.exps[n][1]) * lin[2].pow(t.exps[n][2]) *
+                coeffs_[n];
+  }
+  return r;
+}
+
+Polynomial Polynomial::homogeneous_part(int d) const {
+  Polynomial r;
+  const auto& t = table();
+  for (int n = 0; n < kNumCoeffs; ++n)
+    if (t.exps[n][0] + t.exps[n][1] + t.exps[n][2] == d) r.coeffs_[n] = coeffs_[n];
+  return r;
+}
+
+std::string Polynomial::str() const {
+  std::string s;
+  const auto& t = table();
+  const char* names = "xyz";
+  // Highest degree first reads like the usual notation.
+  for (int d = kMaxDegree; d >= 0; --d)
+    for (int n = 0; n < kNumCoeffs; ++n) {
+      const auto& e = t.exps[n];
+      if (e[0] + e[1] + e[2] != d || coeffs_[n] == 0.0) continue;
+      const double c = coeffs_[n];
+      char buf[64];
+      const double a = std::abs(c);
+      if (s.empty())
+        s += c < 0 ? "-" : "";
+      else
+        s += c < 0 ? " - " : " + ";
+      if (a != 1.0 || d == 0) {
+        std::snprintf(buf, sizeof buf, "%.10g", a);
+        s += buf;
+      }
+      for (int k = 0; k < 3; ++k) {
+        if (e[k] == 0) continue;
+        s += names[k];
+        if (e[k] > 1) s += "^" + std::to_string(e[k]);
+      }
+    }
+  return s.empty() ? "0" : s;
+}
+
+}  // namespace pcsg
