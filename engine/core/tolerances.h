@@ -22,6 +22,20 @@ struct Tolerances {
   // Newton iteration cap: quadratic convergence needs < 10 from a mesh-quality start; 50 leaves
   // room for damped steps from poor starts without hiding divergence.
   int solve_max_iterations = 50;
+  // Two faces meet tangentially (no proper edge) when the sine of their normals' angle on the
+  // common curve is below this (dimensionless): an edge point is then located only to
+  // solve_residual / sine = 1e-9 L, the size of contact_gap.
+  double tangential_sine = 1e-3;
+  // Spacing of the exact samples along an edge curve: 5e-3 L gives >= 20 samples per radian on
+  // curvature radii >= 0.1 L, so lookups along the polyline are within ~1e-5 L of the curve.
+  double edge_sample_step = 5e-3;
+  // Largest turn of the tangent between two edge samples (radians): keeps the chord-to-arc
+  // length correction (exact on circles) accurate to ~1e-10 relative on general curves.
+  double edge_sample_turn = 0.05;
+  // Cells of the grid (along the longest side of a solid's box) on which faces, edges and
+  // vertices are discovered before being traced exactly: resolves features >= L / 40, the
+  // smallest the paper's objects have is ~L / 10.
+  int discovery_cells = 40;
 
   // --- contact classification ----------------------------------------------------------------
   // |gap| below this counts as touching. Witnesses are projected to ~1e-12 L; 1e-9 L leaves
@@ -40,6 +54,10 @@ struct Tolerances {
   // Edge tangents are collinear (e-e-touch rather than e-e-cross) when the sine of their angle
   // is below this (dimensionless): round-off on unit tangents is ~1e-15, motion drift ~1e-9.
   double collinear_sine = 1e-7;
+  // A surface holds a straight segment when g(p + t d), t in units of L, has all its t-terms
+  // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line
+  // by ~1e-9 L over a length L, like contact_gap, while round-off is ~1e-14.
+  double straight_line_relative = 1e-9;
 
   // --- meshes (collision checks and rendering only) ------------------------------------------
   // Default chordal error of the meshes: 1e-3 L keeps a 1280-pixel image within one pixel and
@@ -51,18 +69,28 @@ struct Tolerances {
   // examples' features (smallest radius of curvature ~0.1 L) with ~10 steps per radian.
   double motion_step = 1e-2;
 
+  // Kept contacts are re-projected after every motion step until their residual is below
+  // this: 100x below contact_gap, so drift never accumulates into a classification change.
+  double keep_residual = 1e-11;
+  // Finite-difference displacement for contact-point rates (drive directions only, never for
+  // exactness): sqrt(eps) * L balances truncation against round-off.
+  double rate_step = 1e-7;
+
   // Builds the tolerances of a scene whose length scale is L (> 0): every length above is the
   // relative factor times L; dimensionless values and counts are kept.
   static Tolerances for_length_scale(double L) {
     Tolerances t;
     t.length_scale = L;
     t.solve_residual *= L;
+    t.edge_sample_step *= L;
     t.contact_gap *= L;
     t.penetration *= L;
     t.on_boundary *= L;
     t.distinct_points *= L;
     t.mesh_chordal_error *= L;
     t.motion_step *= L;
+    t.keep_residual *= L;
+    t.rate_step *= L;
     return t;
   }
 };

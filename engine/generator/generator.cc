@@ -1,0 +1,247 @@
+#include "engine/generator/generator.h"
+
+#include <chrono>
+#include <map>
+#include <thread>
+
+#include "engine/generator/hypothesis.h"
+
+namespace pcsg {
+
+std::vector<MotionVariant> motion_variants() {
+  return {
+      {true, 0.0, false},         // slidingA / slidingB, least-norm separation
+      {true, 0.0, true},          // the same with separation by rotation
+      {false, 0.0, false},        // combined sliding
+      {false, M_PI / 4, false},   // combined, other paths on the face
+      {false, -M_PI / 4, false},
+  };
+}
+
+namespace {
+
+struct TryResult {
+  Candidate candidate;
+  MotionOutcome outcome;
+  MotionCounters counters;
+};
+
+// Whether a variant differs from an earlier one for this plan (turns only matter when a contact
+// slides toward a lower-dimensional element; the separation style only with removals).
+bool variant_matters(const MotionVariant& v, const std::vector<ContactPlan>& plan) {
+  bool approach = false, removes = false;
+  for (const ContactPlan& p : plan) {
+    if (p.action == ContactAction::Remove) removes = true;
+    if (p.action == ContactAction::Change) approach = true;
+  }
+  if (v.turn != 0 && !approach) return false;
+  if (v.remove_by_rotation && !removes) return false;
+  if (!v.fix_unchanged_side && !approach) return false;
+  return true;
+}
+
+// Plans that differ only by which of several identical contacts changes are the same up to
+// that choice; trying two of them covers asymmetric situations without trying all.
+constexpr size_t kMaxPlansPerHypothesis = 2;
+
+TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h) {
+  TryResult r;
+  r.candidate.from = s.id;
+  r.candidate.cf = h.cf;
+  std::string reasons;
+  const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+  for (size_t p = 0; p < plans; ++p)
+    for (const MotionVariant& v : motion_variants()) {
+      if (!variant_matters(v, h.plan_options[p])) continue;
+      ++r.candidate.attempts;
+      MotionOutcome o = run_transition_motion(scene, s.pose, s.contacts, h.plan_options[p], h.cf,
+                                              v, r.counters);
+      r.candidate.motion = o.motion;
+      r.candidate.steps = o.steps;
+      if (o.feasible) {
+        r.candidate.feasible = true;
+        r.outcome = std::move(o);
+        return r;
+      }
+      if (!reasons.empty()) reasons += "; ";
+      reasons += o.motion + ": " + o.reason;
+      r.outcome = std::move(o);
+    }
+  r.candidate.reason = reasons;
+  return r;
+}
+
+class Builder {
+ public:
+  Builder(const SceneGeometry& scene, const GeneratorOptions& options,
+          GeneratorListener* listener, const std::atomic<bool>* cancel)
+      : scene_(scene), options_(options), listener_(listener), cancel_(cancel) {
+    graph_.scene = scene.spec.name;
+  }
+
+  StateGraph run();
+
+ private:
+  bool cancelled() const { return cancel_ && cancel_->load(); }
+  // The state of this CF whose region holds `pose`, or -1.
+  int find_state(const ContactFormation& cf, const Pose& pose);
+  int add_state(const ContactFormation& cf, const Pose& pose,
+                const std::vector<PointContact>& contacts, bool seed, int depth);
+  void grow(int seed_id);
+  void add_link(int from, int to, const std::string& motion);
+
+  const SceneGeometry& scene_;
+  GeneratorOptions options_;
+  GeneratorListener* listener_;
+  const std::atomic<bool>* cancel_;
+  StateGraph graph_;
+  MotionCounters counters_;
+  std::map<std::pair<int, int>, bool> linked_;
+};
+
+int Builder::find_state(const ContactFormation& cf, const Pose& pose) {
+  for (const State& s : graph_.states) {
+    if (!(s.cf == cf)) continue;
+    if (connected_within_cf(scene_, s.pose, pose, cf, counters_) ||
+        connected_within_cf(scene_, pose, s.pose, cf, counters_))
+      return s.id;
+  }
+  return -1;
+}
+
+int Builder::add_state(const ContactFormation& cf, const Pose& pose,
+                       const std::vector<PointContact>& contacts, bool seed, int depth) {
+  State s;
+  s.id = static_cast<int>(graph_.states.size());
+  s.cf = cf;
+  s.pose = pose.canonical();
+  s.contacts = contacts;
+  s.seed = seed;
+  s.depth = depth;
+  graph_.states.push_back(s);
+  if (listener_) listener_->on_state(graph_, graph_.states.back());
+  return s.id;
+}
+
+void Builder::add_link(int from, int to, const std::string& motion) {
+  if (from == to || linked_[{from, to}]) return;
+  linked_[{from, to}] = true;
+  graph_.links.push_back({from, to, LinkKind::LN, motion});
+  // The reverse of an LN transition that drops cardinality is a GN link (Section II-D).
+  if (graph_.states[to].cf.cardinality() < graph_.states[from].cf.cardinality()) {
+    graph_.links.push_back({to, from, LinkKind::GN, motion});
+  }
+}
+
+void Builder::grow(int seed_id) {
+  std::vector<int> frontier = {seed_id};
+  int level = 0;
+  while (!frontier.empty() && !cancelled()) {
+    // Every hypothesis of every state on this level, in a fixed order.
+    std::vector<std::pair<int, Hypothesis>> jobs;
+    for (int id : frontier)
+      for (Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts))
+        jobs.emplace_back(id, std::move(h));
+    std::vector<TryResult> results(jobs.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
+        if (cancelled()) break;
+        results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second);
+      }
+    };
+    const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    if (cancelled()) break;
+
+    // Merge in job order: deterministic whatever the thread count.
+    std::vector<int> next_frontier;
+    for (size_t j = 0; j < jobs.size(); ++j) {
+      TryResult& r = results[j];
+      counters_.detections += r.counters.detections;
+      counters_.pair_solves += r.counters.pair_solves;
+      counters_.steps += r.counters.steps;
+      Candidate& c = r.candidate;
+      if (c.feasible) {
+        int to = find_state(c.cf, r.outcome.end);
+        if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
+          to = add_state(c.cf, r.outcome.end, r.outcome.contacts, false,
+                         graph_.states[c.from].depth + 1);
+          next_frontier.push_back(to);
+        }
+        c.to = to;
+        if (to >= 0) add_link(c.from, to, c.motion);
+      }
+      graph_.candidates.push_back(c);
+      if (listener_) {
+        listener_->on_candidate(graph_, graph_.candidates.back());
+        listener_->on_progress(graph_, level, static_cast<int>(j + 1),
+                               static_cast<int>(jobs.size()));
+      }
+    }
+    frontier = std::move(next_frontier);
+    ++level;
+  }
+}
+
+StateGraph Builder::run() {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<SeedCandidate> seeds;
+  if (scene_.spec.auto_seeds) {
+    seeds = find_seed_candidates(scene_, counters_);
+  } else {
+    for (const SeedSpec& s : scene_.spec.seeds) seeds.push_back(seed_from_pose(scene_, s, counters_));
+  }
+  // Highest cardinality first: a local maximum's LN graph covers the states below it, so later
+  // candidates already in the graph add nothing (Section IV: one seed per local maximum).
+  for (const SeedCandidate& sc : seeds) {
+    if (cancelled()) break;
+    const int existing = find_state(sc.cf, sc.pose);
+    if (existing >= 0) {
+      if (!scene_.spec.auto_seeds) graph_.states[existing].seed = true;
+      continue;
+    }
+    grow(add_state(sc.cf, sc.pose, sc.contacts, true, 0));
+  }
+  graph_.stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  graph_.stats.collision_queries = counters_.detections;
+  graph_.stats.pair_solves = counters_.pair_solves;
+  graph_.stats.motion_steps = counters_.steps;
+  return std::move(graph_);
+}
+
+}  // namespace
+
+StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& options,
+                          GeneratorListener* listener, const std::atomic<bool>* cancel) {
+  Builder b(scene, options, listener, cancel);
+  return b.run();
+}
+
+MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,
+                               const Candidate& candidate, const MotionObserver& observer) {
+  MotionCounters counters;
+  MotionOutcome last;
+  for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
+    if (!(h.cf == candidate.cf)) continue;
+    const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+    for (size_t p = 0; p < plans; ++p)
+      for (const MotionVariant& v : motion_variants()) {
+        if (!variant_matters(v, h.plan_options[p])) continue;
+        // Replay only the motion the candidate reports (its last or successful one).
+        MotionOutcome dry = run_transition_motion(scene, from.pose, from.contacts,
+                                                  h.plan_options[p], h.cf, v, counters);
+        if (dry.motion != candidate.motion) continue;
+        return run_transition_motion(scene, from.pose, from.contacts, h.plan_options[p], h.cf,
+                                     v, counters, observer);
+      }
+  }
+  last.reason = "no motion of this candidate could be replayed";
+  return last;
+}
+
+}  // namespace pcsg

@@ -1,0 +1,52 @@
+#pragma once
+// The point-contact state graph generator (paper Section III): from seed states, grow each
+// seed's LN graph breadth-first by hypothesising LN CFs and proving each with a feasible
+// compliant transition motion, and merge the seeds' graphs into one.
+//
+// Deterministic: the candidates of one BFS level are tried in parallel (each is a pure function
+// of the scene, the state and the hypothesis) and merged in a fixed order, so 1 or N threads
+// give the same graph.
+#include <atomic>
+
+#include "engine/generator/graph.h"
+#include "engine/generator/seeds.h"
+
+namespace pcsg {
+
+struct GeneratorOptions {
+  int threads = 1;
+  // Safety bound on the number of states (a valid scene has far fewer).
+  int max_states = 2000;
+};
+
+// Progress and results as they are found. Called from the thread that runs generate_graph, in
+// the deterministic merge order.
+class GeneratorListener {
+ public:
+  virtual ~GeneratorListener() = default;
+  virtual void on_state(const StateGraph& graph, const State& state) {
+    (void)graph, (void)state;
+  }
+  virtual void on_candidate(const StateGraph& graph, const Candidate& candidate) {
+    (void)graph, (void)candidate;
+  }
+  // `done` of `total` candidates of the current BFS level are tried.
+  virtual void on_progress(const StateGraph& graph, int level, int done, int total) {
+    (void)graph, (void)level, (void)done, (void)total;
+  }
+};
+
+StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& options = {},
+                          GeneratorListener* listener = nullptr,
+                          const std::atomic<bool>* cancel = nullptr);
+
+// The motion variants tried, in order, for one hypothesis (paper Section III-C: the preferred
+// finite motions first, then combined ones and other directions on faces).
+std::vector<MotionVariant> motion_variants();
+
+// Re-runs the motion that a candidate used (or the variants in order, for a failed one) with an
+// observer, for animations and frame-by-frame debugging. Deterministic.
+MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,
+                               const Candidate& candidate, const MotionObserver& observer);
+
+}  // namespace pcsg

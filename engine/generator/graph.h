@@ -1,0 +1,55 @@
+#pragma once
+// The point-contact state graph (paper Section II-D, III): states <CF, witness>, the links
+// between neighbouring states, and every candidate transition that was tried.
+#include <string>
+#include <vector>
+
+#include "engine/contact/contact_formation.h"
+
+namespace pcsg {
+
+struct State {
+  int id = -1;
+  ContactFormation cf;
+  Pose pose;                          // the witness configuration X_BA
+  std::vector<PointContact> contacts; // its exact contacts, re-detected at `pose`
+  bool seed = false;
+  int depth = 0;                      // BFS depth from its seed
+};
+
+enum class LinkKind { LN, GN };
+
+struct Link {
+  int from = -1, to = -1;
+  LinkKind kind = LinkKind::LN;  // LN: card(to) <= card(from); GN: the reverse of an LN
+  std::string motion;            // "slidingA", "slidingB", "rotation", "combined", ...
+};
+
+// One hypothesised LN CF of a state and the outcome of trying to reach it.
+struct Candidate {
+  int from = -1;
+  ContactFormation cf;
+  bool feasible = false;
+  int to = -1;                   // the state reached, when feasible
+  std::string motion;            // the motion that worked, or the last one tried
+  std::string reason;            // for failures: what collided or what went wrong, where
+  int steps = 0;                 // motion steps taken in the motion reported
+  int attempts = 0;              // motions tried
+};
+
+struct GraphStats {
+  double seconds = 0;
+  long collision_queries = 0;    // contact/collision detections at a pose
+  long pair_solves = 0;          // exact element-pair solves
+  long motion_steps = 0;
+};
+
+struct StateGraph {
+  std::string scene;
+  std::vector<State> states;
+  std::vector<Link> links;
+  std::vector<Candidate> candidates;
+  GraphStats stats;
+};
+
+}  // namespace pcsg

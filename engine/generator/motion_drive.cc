@@ -1,0 +1,165 @@
+#include "engine/generator/motion_drive.h"
+
+#include <Eigen/SVD>
+#include <limits>
+
+namespace pcsg {
+
+Eigen::Vector3d normal_in_A(const Pose& X, const PointContact& c) {
+  return -(X.quaternion.conjugate() * c.normal_B);
+}
+
+std::optional<ContactRates> contact_rates(const SceneGeometry& scene, const Pose& X,
+                                          const TwistFrame& frame, const PointContact& c,
+                                          long& pair_solves) {
+  // One-sided differences: a perturbation that leaves the element is retried on the other side.
+  const double eps = scene.tol.rate_step;
+  ContactRates r;
+  const Eigen::Vector3d nA0 = normal_in_A(X, c);
+  for (int i = 0; i < 6; ++i) {
+    std::optional<PointContact> moved;
+    double h = eps;
+    for (double sign : {1.0, -1.0}) {
+      Twist s = Twist::Zero();
+      s[i] = sign * eps;
+      const Pose Xi = frame.apply(X, s);
+      ++pair_solves;
+      moved = solve_pair(scene, Xi, c.a, c.b, c.type, c.p_A, c.p_B);
+      if (moved) {
+        h = sign * eps;
+        r.normal_A.col(i) = (normal_in_A(Xi, *moved) - nA0) / h;
+        break;
+      }
+    }
+    if (!moved) return std::nullopt;
+    r.point_A.col(i) = (moved->p_A - c.p_A) / h;
+    r.point_B.col(i) = (moved->p_B - c.p_B) / h;
+    r.normal_B.col(i) = (moved->normal_B - c.normal_B) / h;
+  }
+  return r;
+}
+
+void DriveSystem::add_hard(const Eigen::MatrixXd& rows) {
+  for (int i = 0; i < rows.rows(); ++i) hard.push_back(rows.row(i));
+}
+
+void DriveSystem::add_drive(const Eigen::MatrixXd& rows, const Eigen::VectorXd& t, double weight) {
+  for (int i = 0; i < rows.rows(); ++i) {
+    drive.push_back(rows.row(i) * weight);
+    target.push_back(t[i] * weight);
+  }
+}
+
+namespace {
+
+// Orthonormal basis of the null space of the stacked rows (6 x k).
+Eigen::MatrixXd null_space(const std::vector<Eigen::Matrix<double, 1, 6>>& rows) {
+  if (rows.empty()) return Eigen::MatrixXd::Identity(6, 6);
+  Eigen::MatrixXd C(rows.size(), 6);
+  for (size_t i = 0; i < rows.size(); ++i) C.row(i) = rows[i];
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
+  const auto& sv = svd.singularValues();
+  // Rank threshold relative to the largest singular value: rows are contact normals and
+  // moments of unit size, so 1e-9 separates true dependence from round-off (~1e-15).
+  constexpr double kRankRelative = 1e-9;
+  int rank = 0;
+  for (int i = 0; i < sv.size(); ++i)
+    if (sv[i] > kRankRelative * std::max(sv[0], 1e-300)) ++rank;
+  return svd.matrixV().rightCols(6 - rank);
+}
+
+}  // namespace
+
+std::optional<Twist> DriveSystem::solve() const {
+  const Eigen::MatrixXd N = null_space(hard);
+  if (N.cols() == 0 || drive.empty()) return std::nullopt;
+  Eigen::MatrixXd D(drive.size(), 6);
+  Eigen::VectorXd t(drive.size());
+  for (size_t i = 0; i < drive.size(); ++i) {
+    D.row(i) = drive[i];
+    t[i] = target[i];
+  }
+  const Eigen::MatrixXd DN = D * N;
+  const Eigen::VectorXd z = DN.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(t);
+  const Twist s = N * z;
+  // Progress: the drive residual must drop; otherwise the kept contacts forbid this drive.
+  const double before = t.norm(), after = (D * s - t).norm();
+  constexpr double kMinProgress = 1e-6;  // relative decrease of the drive residual
+  if (!(before - after > kMinProgress * before) || !s.allFinite()) return std::nullopt;
+  return s;
+}
+
+Twist minimum_norm_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
+  const Eigen::VectorXd d = J.completeOrthogonalDecomposition().solve(-r);
+  return d;
+}
+
+int element_dimension(ElementId el) {
+  return el.kind == ElementKind::Face ? 2 : el.kind == ElementKind::Edge ? 1 : 0;
+}
+
+Eigen::Vector3d face_normal(const Solid& S, int face, const Eigen::Vector3d& x) {
+  return S.surfaces[S.faces[face].surface].gradient(x).normalized();
+}
+
+namespace {
+
+std::vector<int> surfaces_of(const Solid& S, ElementId el) {
+  switch (el.kind) {
+    case ElementKind::Face:
+      return {S.faces[el.index].surface};
+    case ElementKind::Edge:
+      return {S.edges[el.index].surface1, S.edges[el.index].surface2};
+    case ElementKind::Vertex:
+      return S.vertices[el.index].surfaces;
+  }
+  return {};
+}
+
+Eigen::Vector3d tangential(const Eigen::Vector3d& v, const Eigen::Vector3d& n) {
+  return v - v.dot(n) * n;
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> direction_toward(const Solid& S, ElementId el,
+                                                const Eigen::Vector3d& x,
+                                                const Eigen::Vector3d& n_S) {
+  Eigen::Vector3d q = x;
+  if (el.kind == ElementKind::Vertex) {
+    q = S.vertices[el.index].point;
+  } else if (el.kind == ElementKind::Edge) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const CurveSample& cs : S.edges[el.index].samples)
+      if ((cs.point - x).squaredNorm() < best) {
+        best = (cs.point - x).squaredNorm();
+        q = cs.point;
+      }
+    if (!std::isfinite(best)) return std::nullopt;
+  } else {
+    q = S.faces[el.index].interior_point;
+  }
+  const Eigen::Vector3d d = tangential(q - x, n_S);
+  if (d.norm() <= 0) return std::nullopt;
+  return d.normalized();
+}
+
+Eigen::Vector3d cone_middle(const Solid& S, ElementId el, const Eigen::Vector3d& x) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int s : surfaces_of(S, el)) sum += S.surfaces[s].gradient(x).normalized();
+  return sum.normalized();
+}
+
+Eigen::Vector3d into_face(const Solid& S, int face, ElementId from, const Eigen::Vector3d& x) {
+  const int own = S.faces[face].surface;
+  const Eigen::Vector3d n = face_normal(S, face, x);
+  // The other surfaces through the boundary element bound the face: their inequality rises
+  // outward, so minus their gradient, on the tangent plane, points into the face.
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int s : surfaces_of(S, from))
+    if (s != own) d -= tangential(S.surfaces[s].gradient(x).normalized(), n);
+  if (d.norm() == 0) d = tangential(S.faces[face].interior_point - x, n);
+  return d.normalized();
+}
+
+}  // namespace pcsg

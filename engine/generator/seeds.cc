@@ -1,0 +1,226 @@
+#include "engine/generator/seeds.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "engine/core/error.h"
+#include "engine/generator/motion_drive.h"
+
+namespace pcsg {
+namespace {
+
+enum class Contactness { Apart, Touching, Penetrating };
+
+Contactness classify(const SceneGeometry& scene, const Pose& X, MotionCounters& counters,
+                     ContactReport* out = nullptr) {
+  ++counters.detections;
+  ContactReport rep = detect_contacts(scene, X);
+  const Contactness c = rep.penetrating()        ? Contactness::Penetrating
+                        : rep.contacts.empty() ? Contactness::Apart
+                                               : Contactness::Touching;
+  if (out) *out = std::move(rep);
+  return c;
+}
+
+// Bisection between an apart pose (t = lo) and a penetrating one (t = hi) along `at(t)` to the
+// first touching pose. Returns false when none is found to the solve tolerance.
+template <class PoseAt>
+bool first_touch(const SceneGeometry& scene, PoseAt at, double lo, double hi,
+                 MotionCounters& counters, Pose& touch, ContactReport& rep) {
+  // 60 halvings take any bracket of size <= 1e3 L below 1e-15 L.
+  constexpr int kMaxBisections = 60;
+  for (int k = 0; k < kMaxBisections; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    const Contactness c = classify(scene, at(mid), counters, &rep);
+    if (c == Contactness::Touching) {
+      touch = at(mid);
+      return true;
+    }
+    (c == Contactness::Apart ? lo : hi) = mid;
+  }
+  return false;
+}
+
+// Settles A from its first contact by a compliant motion along -d, keeping the contacts it
+// makes and releasing those the push pulls away from.
+std::optional<SeedCandidate> settle(const SceneGeometry& scene, Pose X, ContactReport rep,
+                                    const Eigen::Vector3d& d, MotionCounters& counters) {
+  const double h = scene.tol.motion_step;
+  const double size = std::max(scene.A.bbox.diagonal().norm() / 2, 1e-3 * scene.tol.length_scale);
+  // Resting takes at most a few sizes of travel.
+  const int max_steps = static_cast<int>(6 * size / h);
+  std::vector<PointContact> active = rep.contacts;
+  for (int step = 0; step < max_steps; ++step) {
+    const TwistFrame F{X.apply(scene.A.bbox.center()), size};
+    // The push: translate along -d, rotation free.
+    auto solve_with = [&](const std::vector<PointContact>& keep) {
+      DriveSystem sys;
+      for (const PointContact& c : keep) sys.add_hard(F.from_origin_jacobian(c.jacobian));
+      Eigen::MatrixXd trans = Eigen::MatrixXd::Zero(3, 6);
+      trans.leftCols<3>().setIdentity();
+      sys.add_drive(trans, -d, 1.0);
+      return sys.solve();
+    };
+    auto s = solve_with(active);
+    // Release a contact when the push, without it, would lift it off (a negative multiplier).
+    for (size_t k = 0; k < active.size() && active.size() > 1; ++k) {
+      std::vector<PointContact> rest = active;
+      rest.erase(rest.begin() + k);
+      auto s2 = solve_with(rest);
+      if (!s2) continue;
+      const double lift = (F.from_origin_jacobian(active[k].jacobian) * *s2)(0);
+      const double gain_with = s ? -d.dot(s->head<3>()) : 0.0;
+      const double gain_without = -d.dot(s2->head<3>());
+      if (lift > 0 && gain_without > gain_with + 1e-9) {
+        active = rest;
+        s = s2;
+        break;
+      }
+    }
+    // At rest: the push has no component left along the contacts' free motions.
+    constexpr double kRestRelative = 1e-3;  // progress per unit drive below this: resting
+    if (!s || -d.dot(s->head<3>()) < kRestRelative * TwistFrame::displacement(*s)) break;
+    *s *= h / TwistFrame::displacement(*s);
+    // Step with re-projection onto the active contacts.
+    Pose Y = F.apply(X, *s);
+    bool ok = true;
+    for (int it = 0; it < 30; ++it) {
+      Eigen::VectorXd r(active.size());
+      Eigen::MatrixXd J(active.size(), 6);
+      const TwistFrame FY{Y.apply(scene.A.bbox.center()), size};
+      for (size_t i = 0; i < active.size(); ++i) {
+        ++counters.pair_solves;
+        auto c = solve_pair(scene, Y, active[i].a, active[i].b, active[i].type, active[i].p_A,
+                            active[i].p_B);
+        if (!c) {
+          ok = false;
+          break;
+        }
+        active[i] = *c;
+        r[i] = c->residual(0);
+        J.row(i) = FY.from_origin_jacobian(c->jacobian).row(0);
+      }
+      if (!ok || r.cwiseAbs().maxCoeff() <= scene.tol.keep_residual) break;
+      Y = FY.apply(Y, minimum_norm_step(J, r));
+    }
+    if (!ok) break;
+    ContactReport now;
+    const Contactness c = classify(scene, Y, counters, &now);
+    ++counters.steps;
+    if (c == Contactness::Penetrating || now.contacts.size() > active.size()) {
+      // A new contact: find where it starts and keep it from then on.
+      const Pose X0 = X;
+      const Twist s0 = *s;
+      auto at = [&](double t) { return F.apply(X0, s0 * t); };
+      Pose touch;
+      ContactReport trep;
+      if (!first_touch(scene, at, 0.0, 1.0, counters, touch, trep)) break;
+      X = touch;
+      active = trep.contacts;
+      continue;
+    }
+    X = Y;
+    active = now.contacts;
+    if (active.empty()) break;  // slid off: no resting state this way
+  }
+  ContactReport fin;
+  if (classify(scene, X, counters, &fin) != Contactness::Touching) return std::nullopt;
+  SeedCandidate out{ContactFormation::of(fin.contacts), X, fin.contacts};
+  const ProjectionResult proj = project_onto_cf(scene, X, out.cf);
+  if (proj.ok) {
+    ContactReport pr;
+    if (classify(scene, proj.pose, counters, &pr) == Contactness::Touching &&
+        ContactFormation::of(pr.contacts) == out.cf) {
+      out.pose = proj.pose;
+      out.contacts = pr.contacts;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
+                                                MotionCounters& counters) {
+  // Push directions: the six axes and the eight diagonals; orientations: A as given and turned
+  // a quarter about x and about y, so each of A's principal directions meets B at least once.
+  std::vector<Eigen::Vector3d> dirs;
+  for (int a = 0; a < 3; ++a)
+    for (double sgn : {-1.0, 1.0}) {
+      Eigen::Vector3d d = Eigen::Vector3d::Zero();
+      d[a] = sgn;
+      dirs.push_back(d);
+    }
+  for (double x : {-1.0, 1.0})
+    for (double y : {-1.0, 1.0})
+      for (double z : {-1.0, 1.0}) dirs.push_back(Eigen::Vector3d(x, y, z).normalized());
+  const std::vector<Eigen::Quaterniond> turns = {
+      Eigen::Quaterniond::Identity(),
+      Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())),
+      Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()))};
+
+  const Eigen::Vector3d cB = scene.B.bbox.center();
+  const double reach = scene.B.bbox.diagonal().norm() / 2 + scene.A.bbox.diagonal().norm() / 2;
+  std::vector<SeedCandidate> out;
+  for (const Eigen::Vector3d& d : dirs)
+    for (const Eigen::Quaterniond& q : turns) {
+      // A starts outside B along d and moves toward B's centre until it first touches.
+      auto at = [&](double t) {
+        Pose X;
+        X.quaternion = q;
+        X.position = cB + d * (reach * (1.0 - t)) - (q * scene.A.bbox.center());
+        return X;
+      };
+      ContactReport rep;
+      if (classify(scene, at(0.0), counters) != Contactness::Apart) continue;
+      // March in steps of the motion step (relative to the reach) until not apart.
+      const double dt = scene.tol.motion_step / reach;
+      double t = 0;
+      Contactness c = Contactness::Apart;
+      while (t < 1.0 && c == Contactness::Apart) {
+        t = std::min(1.0, t + dt);
+        c = classify(scene, at(t), counters, &rep);
+      }
+      Pose touch = at(t);
+      if (c == Contactness::Penetrating &&
+          !first_touch(scene, at, t - dt, t, counters, touch, rep))
+        continue;
+      if (c == Contactness::Apart) continue;
+      auto cand = settle(scene, touch, rep, d, counters);
+      if (cand) out.push_back(std::move(*cand));
+    }
+  std::stable_sort(out.begin(), out.end(), [](const SeedCandidate& a, const SeedCandidate& b) {
+    if (a.cf.cardinality() != b.cf.cardinality()) return a.cf.cardinality() > b.cf.cardinality();
+    return a.cf < b.cf;
+  });
+  return out;
+}
+
+SeedCandidate seed_from_pose(const SceneGeometry& scene, const SeedSpec& seed,
+                             MotionCounters& counters) {
+  ContactReport rep;
+  const Contactness c = classify(scene, seed.pose, counters, &rep);
+  if (c == Contactness::Penetrating) {
+    const Penetration& p = rep.penetrations.front();
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "penetration depth %.3g at (%.4g, %.4g, %.4g)", p.depth,
+                  p.point_B.x(), p.point_B.y(), p.point_B.z());
+    throw SceneError(seed.where, "seed pose \"" + seed.pose.str() + "\" penetrates: " +
+                                     scene.A.element_name(p.a) + " inside " +
+                                     scene.B.element_name(p.b) + ", " + buf);
+  }
+  if (c == Contactness::Apart)
+    throw SceneError(seed.where, "seed pose \"" + seed.pose.str() +
+                                     "\" touches nothing: a seed must be a contact state");
+  SeedCandidate out{ContactFormation::of(rep.contacts), seed.pose, rep.contacts};
+  const ProjectionResult proj = project_onto_cf(scene, seed.pose, out.cf);
+  if (!proj.ok)
+    throw SceneError(seed.where, "seed pose cannot be projected onto " + out.cf.str(scene) +
+                                     ": " + proj.reason);
+  out.pose = proj.pose;
+  classify(scene, out.pose, counters, &rep);
+  out.contacts = rep.contacts;
+  return out;
+}
+
+}  // namespace pcsg

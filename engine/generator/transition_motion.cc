@@ -1,0 +1,519 @@
+#include "engine/generator/transition_motion.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "engine/generator/motion_drive.h"
+
+namespace pcsg {
+namespace {
+
+enum class Phase { Drive, Settle, Done };
+
+// One contact of the starting state, followed through the motion.
+struct Track {
+  PointContact c;
+  ContactPlan plan;
+  Phase phase = Phase::Drive;
+  int settle_left = 0;
+  ElementId left;  // after an event: the element the contact left on the changing side
+};
+
+// After an event, this many steps carry the changed contact into the interior of its new
+// region, so that the witness is classified with a margin of ~a step, not at the boundary.
+constexpr int kSettleSteps = 3;
+// Events are located to 2^-30 of a step (~1e-11 L for the default step).
+constexpr int kBisections = 30;
+constexpr int kCorrectionIterations = 30;
+// A step that cannot be corrected is halved at most this many times before giving up.
+constexpr int kMaxHalvings = 6;
+// Motions longer than this many times A's size are abandoned (none of the paper's
+// transitions travels more than ~2 sizes).
+constexpr double kMaxTravelSizes = 12.0;
+// A detected contact is matched to a tracked one of the same pair within this many steps.
+constexpr double kMatchSteps = 3.0;
+
+bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
+
+std::string pair_name(const SceneGeometry& scene, ElementId a, ElementId b) {
+  return scene.A.element_name(a) + "-" + scene.B.element_name(b);
+}
+
+std::string fmt_point(const Eigen::Vector3d& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+  return buf;
+}
+
+struct Observation {
+  enum Kind { Same, Event, Collision, KeptChanged } kind = Same;
+  int track = -1;            // for Event / KeptChanged
+  PointContact detected;     // the contact that differs
+  std::string what;          // for Collision / KeptChanged
+  std::vector<PointContact> contacts;
+};
+
+class Motion {
+ public:
+  Motion(const SceneGeometry& scene, const Pose& start, std::vector<Track> tracks,
+         const ContactFormation& target, const MotionVariant& variant, MotionCounters& counters,
+         const MotionObserver& observer)
+      : scene_(scene), tracks_(std::move(tracks)), target_(target), variant_(variant),
+        counters_(counters), observer_(observer), X_(start) {
+    h_ = scene.tol.motion_step;
+    size_ = std::max(scene.A.bbox.diagonal().norm() / 2, scene.tol.length_scale * 1e-3);
+    max_steps_ = static_cast<int>(kMaxTravelSizes * size_ / h_) + 10 * kSettleSteps;
+  }
+
+  MotionOutcome run();
+  // CF-compliant travel toward `to` keeping every tracked contact (all Keep).
+  bool travel_to(const Pose& to);
+
+ private:
+  TwistFrame frame_at(const Pose& X) const { return {X.apply(scene_.A.bbox.center()), size_}; }
+  bool resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const;
+  std::optional<Pose> correct(Pose Y, std::vector<Track>& tracks) const;
+  Observation classify(const Pose& Y, const std::vector<Track>& tracks) const;
+  bool add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys);
+  void emit(const char* phase, const std::vector<PointContact>& contacts,
+            const Observation* collision = nullptr) const;
+  MotionOutcome fail(const std::string& why) const {
+    MotionOutcome o;
+    o.reason = why;
+    o.motion = name();
+    o.steps = step_;
+    o.end = X_;
+    return o;
+  }
+  std::string name() const;
+
+  const SceneGeometry& scene_;
+  std::vector<Track> tracks_;
+  const ContactFormation& target_;
+  MotionVariant variant_;
+  MotionCounters& counters_;
+  const MotionObserver& observer_;
+  Pose X_;
+  double h_ = 0, size_ = 1;
+  int max_steps_ = 0, step_ = 0;
+  bool used_rotation_drive_ = false;
+};
+
+std::string Motion::name() const {
+  bool a_changes = false, b_changes = false, removes = false;
+  for (const Track& t : tracks_) {
+    if (t.plan.action == ContactAction::Change) (t.plan.changes_a ? a_changes : b_changes) = true;
+    if (t.plan.action == ContactAction::Remove) removes = true;
+  }
+  std::string n;
+  auto add = [&](const char* part) { n += n.empty() ? part : std::string("+") + part; };
+  if (!variant_.fix_unchanged_side && (a_changes || b_changes)) {
+    add("combined");
+  } else {
+    if (b_changes) add("slidingA");
+    if (a_changes) add("slidingB");
+  }
+  if (used_rotation_drive_ || (removes && variant_.remove_by_rotation)) add("rotation");
+  if (removes && !variant_.remove_by_rotation) add("separation");
+  if (variant_.turn != 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "@%+.0fdeg", variant_.turn * 180 / M_PI);
+    n += buf;
+  }
+  return n;
+}
+
+bool Motion::resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const {
+  for (size_t i = 0; i < tracks.size(); ++i) {
+    Track& t = tracks[i];
+    if (!maintained(t)) continue;
+    ++counters_.pair_solves;
+    auto s = solve_pair(scene_, Y, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+    if (!s) {
+      if (lost) *lost = static_cast<int>(i);
+      return false;
+    }
+    t.c = *s;
+  }
+  return true;
+}
+
+std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks) const {
+  for (int it = 0; it < kCorrectionIterations; ++it) {
+    if (!resolve(Y, tracks, nullptr)) return std::nullopt;
+    int rows = 0;
+    for (const Track& t : tracks)
+      if (maintained(t)) rows += static_cast<int>(t.c.residual.size());
+    if (rows == 0) return Y;
+    Eigen::VectorXd r(rows);
+    Eigen::MatrixXd J(rows, 6);
+    const TwistFrame F = frame_at(Y);
+    int k = 0;
+    for (const Track& t : tracks) {
+      if (!maintained(t)) continue;
+      const int m = static_cast<int>(t.c.residual.size());
+      r.segment(k, m) = t.c.residual;
+      J.middleRows(k, m) = F.from_origin_jacobian(t.c.jacobian);
+      k += m;
+    }
+    if (r.cwiseAbs().maxCoeff() <= scene_.tol.keep_residual) return Y;
+    Y = F.apply(Y, minimum_norm_step(J, r));
+  }
+  return std::nullopt;
+}
+
+Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) const {
+  Observation obs;
+  ++counters_.detections;
+  const ContactReport rep = detect_contacts(scene_, Y);
+  obs.contacts = rep.contacts;
+  if (rep.penetrating()) {
+    const Penetration& p = rep.penetrations.front();
+    obs.kind = Observation::Collision;
+    obs.detected.a = p.a;
+    obs.detected.b = p.b;
+    obs.detected.point_B = p.point_B;
+    obs.what = "collision: " + pair_name(scene_, p.a, p.b) + " penetrate at " +
+               fmt_point(p.point_B);
+    return obs;
+  }
+  const double radius = kMatchSteps * h_;
+  std::vector<bool> matched(tracks.size(), false);
+  for (const PointContact& d : rep.contacts) {
+    int best = -1;
+    double best_dist = radius;
+    // The same pair, nearest tracked point.
+    for (size_t i = 0; i < tracks.size(); ++i) {
+      const Track& t = tracks[i];
+      if (matched[i] || !(t.c.a == d.a && t.c.b == d.b)) continue;
+      const double dist = (t.c.point_B - d.point_B).norm();
+      if (dist < best_dist) best = static_cast<int>(i), best_dist = dist;
+    }
+    if (best >= 0) {
+      matched[best] = true;
+      continue;
+    }
+    // A changing contact that has reached its new elements: the event.
+    for (size_t i = 0; i < tracks.size(); ++i) {
+      const Track& t = tracks[i];
+      if (matched[i] || t.plan.action != ContactAction::Change || t.phase != Phase::Drive)
+        continue;
+      if (!(t.plan.new_a == d.a && t.plan.new_b == d.b)) continue;
+      const double dist = (t.c.point_B - d.point_B).norm();
+      if (dist < best_dist) best = static_cast<int>(i), best_dist = dist;
+    }
+    if (best >= 0) {
+      matched[best] = true;
+      obs.kind = Observation::Event;
+      obs.track = best;
+      obs.detected = d;
+      continue;
+    }
+    // A kept contact that turned into another pair, or a new contact: both end the motion.
+    for (size_t i = 0; i < tracks.size(); ++i)
+      if (!matched[i] && maintained(tracks[i]) &&
+          (tracks[i].c.point_B - d.point_B).norm() < radius) {
+        obs.kind = Observation::KeptChanged;
+        obs.track = static_cast<int>(i);
+        obs.detected = d;
+        obs.what = "contact " + pair_name(scene_, tracks[i].c.a, tracks[i].c.b) + " became " +
+                   pair_name(scene_, d.a, d.b) + " (" + ptc_type_name(d.type) + ") at " +
+                   fmt_point(d.point_B);
+        return obs;
+      }
+    obs.kind = Observation::Collision;
+    obs.detected = d;
+    obs.what = "collision: new contact " + pair_name(scene_, d.a, d.b) + " (" +
+               ptc_type_name(d.type) + ") at " + fmt_point(d.point_B);
+    return obs;
+  }
+  return obs;
+}
+
+bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
+  if (t.plan.action == ContactAction::Remove) {
+    if (t.phase == Phase::Done) return true;
+    const Eigen::MatrixXd row = F.from_origin_jacobian(t.c.jacobian).topRows(1);
+    sys.add_drive(row, Eigen::VectorXd::Ones(1), 1.0);
+    if (variant_.remove_by_rotation) {
+      Eigen::MatrixXd trans = Eigen::MatrixXd::Zero(3, 6);
+      trans.leftCols<3>().setIdentity();
+      // Weak: prefers turning about the kept contacts over translating A's centre.
+      constexpr double kRotationPreference = 0.3;
+      sys.add_drive(trans, Eigen::VectorXd::Zero(3), kRotationPreference);
+    }
+    return true;
+  }
+  sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
+  if (t.plan.action != ContactAction::Change || t.phase == Phase::Done) return true;
+
+  const auto rates = contact_rates(scene_, X_, F, t.c, counters_.pair_solves);
+  if (!rates) return false;
+  const bool on_a = t.plan.changes_a;
+  const Solid& S = on_a ? scene_.A : scene_.B;
+  const ElementId current = on_a ? t.c.a : t.c.b;
+  const ElementId goal = on_a ? t.plan.new_a : t.plan.new_b;
+  const Eigen::Vector3d x = on_a ? t.c.p_A : t.c.p_B;
+  const Eigen::Vector3d n = on_a ? normal_in_A(X_, t.c) : Eigen::Vector3d(t.c.normal_B);
+  const Eigen::Matrix<double, 3, 6>& dx = on_a ? rates->point_A : rates->point_B;
+  const Eigen::Matrix<double, 3, 6>& dx_other = on_a ? rates->point_B : rates->point_A;
+  const Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * size_;
+  const bool approaching = element_dimension(goal) < element_dimension(current);
+
+  if (t.phase == Phase::Drive) {
+    if (approaching) {
+      // Slide the contact point toward the new, lower-dimensional element.
+      auto u = direction_toward(S, goal, x, n);
+      if (!u) return false;
+      if (variant_.turn != 0) *u = Eigen::AngleAxisd(variant_.turn, n) * *u;
+      sys.add_drive(dx, *u, 1.0);
+      if (variant_.fix_unchanged_side) sys.add_drive(dx_other, Eigen::Vector3d::Zero(), 1.0);
+    } else {
+      // Leaving an edge or vertex for a face (or a vertex for an edge): turn the contact
+      // normal toward the new element's normal (a rotation, Section III-C), and for a vertex
+      // also slide into the new element.
+      used_rotation_drive_ = true;
+      Eigen::Vector3d goal_n = cone_middle(S, goal, x);
+      Eigen::Vector3d dir = goal_n - n;
+      if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
+      if (current.kind == ElementKind::Vertex) {
+        auto u = direction_toward(S, goal, x, n);
+        if (u) sys.add_drive(dx, *u, 1.0);
+      }
+    }
+    return true;
+  }
+  // Settling: into the interior of the new element's region.
+  if (approaching) {
+    used_rotation_drive_ = true;
+    const Eigen::Vector3d dir = cone_middle(S, current, x) - n;
+    if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
+    if (variant_.fix_unchanged_side) sys.add_drive(dx_other, Eigen::Vector3d::Zero(), 0.3);
+  } else if (current.kind == ElementKind::Face) {
+    // `current` is the new face now: slide away from the edge or vertex it was reached from.
+    sys.add_drive(dx, into_face(S, current.index, t.left, x), 1.0);
+  } else {
+    auto u = direction_toward(S, current, x, n);
+    if (u) sys.add_drive(dx, *u, 1.0);
+  }
+  return true;
+}
+
+void Motion::emit(const char* phase, const std::vector<PointContact>& contacts,
+                  const Observation* collision) const {
+  if (!observer_) return;
+  MotionFrame f;
+  f.step = step_;
+  f.pose = X_;
+  f.contacts = contacts;
+  f.phase = phase;
+  if (collision) {
+    f.collided_a.push_back(collision->detected.a);
+    f.collided_b.push_back(collision->detected.b);
+  }
+  observer_(f);
+}
+
+MotionOutcome Motion::run() {
+  emit("drive", {});
+  while (step_ < max_steps_) {
+    bool all_done = true;
+    for (const Track& t : tracks_)
+      if (t.plan.action != ContactAction::Keep && t.phase != Phase::Done) all_done = false;
+    if (all_done) break;
+
+    const TwistFrame F = frame_at(X_);
+    DriveSystem sys;
+    for (const Track& t : tracks_)
+      if (!add_drive(t, F, sys))
+        return fail("contact " + pair_name(scene_, t.c.a, t.c.b) +
+                    " has no rates at step " + std::to_string(step_));
+    auto s = sys.solve();
+    if (!s)
+      return fail("no motion keeps the kept contacts and drives the others (step " +
+                  std::to_string(step_) + ")");
+    *s *= h_ / TwistFrame::displacement(*s);
+
+    // A step whose kept contacts cannot be corrected is shortened.
+    double frac = 1.0;
+    std::optional<Pose> Y;
+    std::vector<Track> moved;
+    for (int k = 0; k <= kMaxHalvings; ++k, frac *= 0.5) {
+      moved = tracks_;
+      Y = correct(F.apply(X_, *s * frac), moved);
+      if (Y) break;
+    }
+    if (!Y)
+      return fail("kept contacts cannot be maintained beyond step " + std::to_string(step_));
+    Observation obs = classify(*Y, moved);
+
+    if (obs.kind != Observation::Same) {
+      // Locate the event between the last good pose and this one.
+      double lo = 0, hi = frac;
+      Pose Y_hi = *Y;
+      std::vector<Track> tracks_hi = moved;
+      for (int k = 0; k < kBisections; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        std::vector<Track> tm = tracks_;
+        auto Ym = correct(F.apply(X_, *s * mid), tm);
+        if (!Ym) {
+          hi = mid;
+          continue;
+        }
+        Observation om = classify(*Ym, tm);
+        if (om.kind == Observation::Same) {
+          lo = mid;
+        } else {
+          hi = mid;
+          Y_hi = *Ym;
+          tracks_hi = tm;
+          obs = om;
+        }
+      }
+      ++step_;
+      ++counters_.steps;
+      if (obs.kind != Observation::Event) {
+        X_ = Y_hi;
+        emit("collision", obs.contacts, &obs);
+        return fail(obs.what + " at step " + std::to_string(step_));
+      }
+      // The changing contact now lies on its new elements: follow that pair from here on.
+      X_ = Y_hi;
+      tracks_ = tracks_hi;
+      Track& t = tracks_[obs.track];
+      t.left = t.plan.changes_a ? t.c.a : t.c.b;
+      t.c = obs.detected;
+      t.phase = Phase::Settle;
+      t.settle_left = kSettleSteps;
+      emit("event", obs.contacts);
+      continue;
+    }
+
+    X_ = *Y;
+    tracks_ = moved;
+    ++step_;
+    ++counters_.steps;
+    for (Track& t : tracks_) {
+      if (t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
+          --t.settle_left <= 0)
+        t.phase = Phase::Done;
+      if (t.plan.action == ContactAction::Remove && t.phase != Phase::Done) {
+        ++counters_.pair_solves;
+        auto sep = solve_pair(scene_, X_, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+        // Separated by half a step: clearly apart, yet the witness stays near the boundary
+        // it was reached through.
+        if (!sep || sep->gap >= 0.5 * h_)
+          t.phase = Phase::Done;
+        else
+          t.c = *sep;
+      }
+    }
+    emit("drive", obs.contacts);
+  }
+  if (step_ >= max_steps_)
+    return fail("did not reach the target within " + std::to_string(max_steps_) + " steps");
+
+  // The end pose must carry exactly the target CF; project it there exactly.
+  ++counters_.detections;
+  const ContactReport rep = detect_contacts(scene_, X_);
+  const ContactFormation reached = ContactFormation::of(rep.contacts);
+  if (rep.penetrating() || !(reached == target_))
+    return fail("ended in " + reached.str(scene_) + " instead of " + target_.str(scene_));
+  const ProjectionResult proj = project_onto_cf(scene_, X_, target_);
+  if (!proj.ok) return fail("projection onto the target failed: " + proj.reason);
+  ++counters_.detections;
+  const ContactReport fin = detect_contacts(scene_, proj.pose);
+  if (fin.penetrating() || !(ContactFormation::of(fin.contacts) == target_))
+    return fail("the projected witness is classified as " +
+                ContactFormation::of(fin.contacts).str(scene_));
+  X_ = proj.pose;
+  emit("done", fin.contacts);
+  MotionOutcome o;
+  o.feasible = true;
+  o.end = proj.pose;
+  o.contacts = fin.contacts;
+  o.motion = name();
+  o.steps = step_;
+  return o;
+}
+
+bool Motion::travel_to(const Pose& to) {
+  const Eigen::Vector3d centre_A = scene_.A.bbox.center();
+  // Remaining motion as a scaled twist about A's centre.
+  auto remaining = [&](const Pose& X) {
+    Twist s;
+    s.head<3>() = to.apply(centre_A) - X.apply(centre_A);
+    const Eigen::AngleAxisd aa(to.quaternion * X.quaternion.conjugate());
+    s.tail<3>() = aa.axis() * aa.angle() * size_;
+    return s;
+  };
+  double best = TwistFrame::displacement(remaining(X_));
+  int stalled = 0;
+  // No progress for this many steps means the drive is blocked (a region boundary or a
+  // collision lies between): the witnesses are then not shown to be connected.
+  constexpr int kMaxStalled = 8;
+  while (step_ < max_steps_) {
+    const Twist rem = remaining(X_);
+    const double dist = TwistFrame::displacement(rem);
+    if (dist <= h_) {
+      // Last hop onto the target itself.
+      std::vector<Track> moved = tracks_;
+      auto Y = correct(to, moved);
+      return Y && classify(*Y, moved).kind == Observation::Same;
+    }
+    if (dist < best - 1e-3 * h_) {
+      best = dist;
+      stalled = 0;
+    } else if (++stalled > kMaxStalled) {
+      return false;
+    }
+    const TwistFrame F = frame_at(X_);
+    DriveSystem sys;
+    for (const Track& t : tracks_) sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
+    sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rem / dist, 1.0);
+    auto s = sys.solve();
+    if (!s) return false;
+    *s *= std::min(h_, dist) / TwistFrame::displacement(*s);
+    std::vector<Track> moved = tracks_;
+    auto Y = correct(F.apply(X_, *s), moved);
+    if (!Y || classify(*Y, moved).kind != Observation::Same) return false;
+    X_ = *Y;
+    tracks_ = moved;
+    ++step_;
+    ++counters_.steps;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
+                         const ContactFormation& cf, MotionCounters& counters) {
+  ++counters.detections;
+  const ContactReport rep = detect_contacts(scene, from);
+  if (!(ContactFormation::of(rep.contacts) == cf)) return false;
+  std::vector<Track> tracks;
+  for (const PointContact& c : rep.contacts) tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}});
+  Motion m(scene, from, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
+  return m.travel_to(to);
+}
+
+std::string MotionVariant::name() const {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s%s turn %+.0f deg", fix_unchanged_side ? "sliding" : "combined",
+                remove_by_rotation ? "/rotation" : "", turn * 180 / M_PI);
+  return buf;
+}
+
+MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& start,
+                                    const std::vector<PointContact>& contacts,
+                                    const std::vector<ContactPlan>& plan,
+                                    const ContactFormation& target, const MotionVariant& variant,
+                                    MotionCounters& counters, const MotionObserver& observer) {
+  std::vector<Track> tracks;
+  for (size_t i = 0; i < contacts.size(); ++i) tracks.push_back(Track{contacts[i], plan[i], Phase::Drive, 0, ElementId{}});
+  Motion m(scene, start, std::move(tracks), target, variant, counters, observer);
+  return m.run();
+}
+
+}  // namespace pcsg

@@ -1,0 +1,71 @@
+#pragma once
+// A neighbouring transition motion (paper Sections III-B, III-C): from a state's witness, move
+// A in small steps that keep the kept contacts exact (Newton projection after every step),
+// drive the changing contacts toward their new elements and the removed ones apart, locate
+// every event (a contact reaching an element boundary, a contact separating, a collision) by
+// bisection rather than at the step grid, and stop at a configuration of the target CF or at
+// the first infeasibility, saying why.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "engine/contact/contact_formation.h"
+#include "engine/generator/hypothesis.h"
+#include "engine/generator/twist_frame.h"
+
+namespace pcsg {
+
+// How a changing contact is driven (the paper's motion types, Section III-B/C).
+struct MotionVariant {
+  // slidingA / slidingB: the contact point on the unchanged side stays fixed while the other
+  // slides; when false the motion is combined (both contact points may move).
+  bool fix_unchanged_side = true;
+  // The drive direction on the contact plane is turned by this angle (radians) about the
+  // normal: where a face offers infinitely many paths, these are enumerated (Section III-C).
+  double turn = 0;
+  // Removal by rotation about the kept contacts (true) or by the least-norm motion (false).
+  bool remove_by_rotation = false;
+  std::string name() const;
+};
+
+// Counters shared by every motion of one generator run.
+struct MotionCounters {
+  long detections = 0;
+  long pair_solves = 0;
+  long steps = 0;
+};
+
+// One accepted step, for observers (animations, frame-by-frame debugging).
+struct MotionFrame {
+  int step = 0;
+  Pose pose;
+  std::vector<PointContact> contacts;  // all exact contacts at `pose`
+  std::string phase;                   // "drive", "event", "settle", "collision", "done"
+  std::vector<ElementId> collided_a, collided_b;  // at a collision frame
+};
+using MotionObserver = std::function<void(const MotionFrame&)>;
+
+struct MotionOutcome {
+  bool feasible = false;
+  Pose end;                           // the witness of the target CF when feasible
+  std::vector<PointContact> contacts; // exact contacts at `end`
+  std::string motion;                 // e.g. "slidingA", "slidingB+rotation", "combined"
+  std::string reason;                 // why it failed
+  int steps = 0;
+};
+
+// Tries one motion variant for one plan of a hypothesis from `start` (whose exact contacts are
+// `contacts`, in the order of `plan`).
+MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& start,
+                                    const std::vector<PointContact>& contacts,
+                                    const std::vector<ContactPlan>& plan,
+                                    const ContactFormation& target, const MotionVariant& variant,
+                                    MotionCounters& counters,
+                                    const MotionObserver& observer = nullptr);
+
+// A CF-compliant motion from `from` toward `to` keeping every contact of `cf`: true when it
+// arrives, i.e. both witnesses lie in one CF-connected region (paper Section II-C).
+bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
+                         const ContactFormation& cf, MotionCounters& counters);
+
+}  // namespace pcsg
