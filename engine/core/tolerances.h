@@ -33,9 +33,9 @@ struct Tolerances {
   // length correction (exact on circles) accurate to ~1e-10 relative on general curves.
   double edge_sample_turn = 0.05;
   // Cells of the grid (along the longest side of a solid's box) on which faces, edges and
-  // vertices are discovered before being traced exactly: resolves features >= L / 40, the
+  // vertices are discovered before being traced exactly: resolves features >= L / 24, while the
   // smallest the paper's objects have is ~L / 10.
-  int discovery_cells = 40;
+  int discovery_cells = 24;
 
   // --- contact classification ----------------------------------------------------------------
   // |gap| below this counts as touching. Witnesses are projected to ~1e-12 L; 1e-9 L leaves
@@ -54,6 +54,26 @@ struct Tolerances {
   // Edge tangents are collinear (e-e-touch rather than e-e-cross) when the sine of their angle
   // is below this (dimensionless): round-off on unit tangents is ~1e-15, motion drift ~1e-9.
   double collinear_sine = 1e-7;
+  // e-e solutions whose tangents' sine is below this are re-solved as e-e-touch: the
+  // common-perpendicular solve locates a touch only to sine ~sqrt(solve_residual / L) ~ 1e-6,
+  // while ordinary crossings (sines ~0.1-1) skip the extra solve.
+  double near_collinear_sine = 1e-3;
+  // A contact direction is in an edge's (vertex's) normal cone when its distance to the cone
+  // of the unit face normals is below this (dimensionless): same reasoning as on_boundary.
+  double normal_cone = 1e-9;
+  // A stationary point is a distance minimum when the relative curvature along its sliding
+  // directions is above -curvature (1/length): round-off ~1e-14 / L below, the examples'
+  // relative curvatures (>= 1e-2 / L) far above.
+  double curvature = 1e-9;
+  // Contact detection finds every local distance minimum up to this gap: meshes are inflated
+  // by their chordal error plus half this band. 1e-3 L (one default chordal error) holds a
+  // contact's neighbourhood in a few triangles while covering near-contacts of motion steps.
+  double candidate_band = 1e-3;
+  // Projection onto a contact formation: largest translation (and rotation times L) of one
+  // Gauss-Newton step, 0.05 L, inside the basin of the pair solves; and an iteration cap
+  // (quadratic convergence needs < 10 from a motion step away).
+  double projection_step = 5e-2;
+  int projection_max_iterations = 60;
   // A surface holds a straight segment when g(p + t d), t in units of L, has all its t-terms
   // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line
   // by ~1e-9 L over a length L, like contact_gap, while round-off is ~1e-14.
@@ -91,6 +111,9 @@ struct Tolerances {
     t.motion_step *= L;
     t.keep_residual *= L;
     t.rate_step *= L;
+    t.curvature /= L;  // a curvature: 1/length
+    t.candidate_band *= L;
+    t.projection_step *= L;
     return t;
   }
 };

@@ -44,8 +44,10 @@ bool variant_matters(const MotionVariant& v, const std::vector<ContactPlan>& pla
 // that choice; trying two of them covers asymmetric situations without trying all.
 constexpr size_t kMaxPlansPerHypothesis = 2;
 
-TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h) {
+TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h,
+                         bool measure) {
   TryResult r;
+  r.counters.measure = measure;
   r.candidate.from = s.id;
   r.candidate.cf = h.cf;
   std::string reasons;
@@ -147,7 +149,8 @@ void Builder::grow(int seed_id) {
     auto worker = [&] {
       for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
         if (cancelled()) break;
-        results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second);
+        results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
+                                    options_.measure_discretisation);
       }
     };
     const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
@@ -161,9 +164,7 @@ void Builder::grow(int seed_id) {
     std::vector<int> next_frontier;
     for (size_t j = 0; j < jobs.size(); ++j) {
       TryResult& r = results[j];
-      counters_.detections += r.counters.detections;
-      counters_.pair_solves += r.counters.pair_solves;
-      counters_.steps += r.counters.steps;
+      counters_.merge(r.counters);
       Candidate& c = r.candidate;
       if (c.feasible) {
         int to = find_state(c.cf, r.outcome.end);
@@ -211,6 +212,12 @@ StateGraph Builder::run() {
   graph_.stats.collision_queries = counters_.detections;
   graph_.stats.pair_solves = counters_.pair_solves;
   graph_.stats.motion_steps = counters_.steps;
+  graph_.stats.max_keep_drift = counters_.max_keep_drift;
+  graph_.stats.max_step_penetration = counters_.max_step_penetration;
+  for (const State& s : graph_.states)
+    for (const PointContact& c : s.contacts)
+      graph_.stats.max_witness_residual =
+          std::max(graph_.stats.max_witness_residual, std::abs(c.gap));
   return std::move(graph_);
 }
 

@@ -15,6 +15,10 @@ namespace pcsg {
 
 struct GeneratorOptions {
   int threads = 1;
+  // Measure the discretisation error of every accepted motion step (at the step's midpoint:
+  // drift of the kept contacts and penetration on the exact surfaces); costs one more contact
+  // detection per step. Used by `pcsg sweep`.
+  bool measure_discretisation = false;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
 };

@@ -42,6 +42,12 @@ struct GraphStats {
   long collision_queries = 0;    // contact/collision detections at a pose
   long pair_solves = 0;          // exact element-pair solves
   long motion_steps = 0;
+  // With GeneratorOptions::measure_discretisation: the largest residual of a kept contact and
+  // the deepest penetration, both at the midpoints of accepted motion steps (before
+  // re-projection), over the whole run; and the largest witness contact residual.
+  double max_keep_drift = 0;
+  double max_step_penetration = 0;
+  double max_witness_residual = 0;
 };
 
 struct StateGraph {

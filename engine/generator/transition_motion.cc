@@ -35,10 +35,6 @@ constexpr double kMatchSteps = 3.0;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
-std::string pair_name(const SceneGeometry& scene, ElementId a, ElementId b) {
-  return scene.A.element_name(a) + "-" + scene.B.element_name(b);
-}
-
 std::string fmt_point(const Eigen::Vector3d& p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
@@ -86,6 +82,9 @@ class Motion {
     return o;
   }
   std::string name() const;
+  // Drift of the kept contacts and penetration at the midpoint of the step X -> Y, where the
+  // motion is not re-projected: the discretisation error of the step grid.
+  void measure_midpoint(const Pose& X, const Pose& Y);
 
   const SceneGeometry& scene_;
   std::vector<Track> tracks_;
@@ -121,6 +120,23 @@ std::string Motion::name() const {
     n += buf;
   }
   return n;
+}
+
+void Motion::measure_midpoint(const Pose& X, const Pose& Y) {
+  Pose mid;
+  mid.position = 0.5 * (X.position + Y.position);
+  mid.quaternion = X.quaternion.slerp(0.5, Y.quaternion);
+  for (const Track& t : tracks_) {
+    if (!maintained(t)) continue;
+    ++counters_.pair_solves;
+    auto c = solve_pair(scene_, mid, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+    if (c)
+      counters_.max_keep_drift = std::max(counters_.max_keep_drift, c->residual.cwiseAbs().maxCoeff());
+  }
+  ++counters_.detections;
+  const ContactReport rep = detect_contacts(scene_, mid);
+  for (const Penetration& p : rep.penetrations)
+    counters_.max_step_penetration = std::max(counters_.max_step_penetration, p.depth);
 }
 
 bool Motion::resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const {
@@ -173,7 +189,7 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) co
     obs.detected.a = p.a;
     obs.detected.b = p.b;
     obs.detected.point_B = p.point_B;
-    obs.what = "collision: " + pair_name(scene_, p.a, p.b) + " penetrate at " +
+    obs.what = "collision: " + element_pair_name(scene_, p.a, p.b) + " penetrate at " +
                fmt_point(p.point_B);
     return obs;
   }
@@ -216,14 +232,14 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) co
         obs.kind = Observation::KeptChanged;
         obs.track = static_cast<int>(i);
         obs.detected = d;
-        obs.what = "contact " + pair_name(scene_, tracks[i].c.a, tracks[i].c.b) + " became " +
-                   pair_name(scene_, d.a, d.b) + " (" + ptc_type_name(d.type) + ") at " +
+        obs.what = "contact " + element_pair_name(scene_, tracks[i].c.a, tracks[i].c.b) + " became " +
+                   element_pair_name(scene_, d.a, d.b) + " (" + ptc_type_name(d.type) + ") at " +
                    fmt_point(d.point_B);
         return obs;
       }
     obs.kind = Observation::Collision;
     obs.detected = d;
-    obs.what = "collision: new contact " + pair_name(scene_, d.a, d.b) + " (" +
+    obs.what = "collision: new contact " + element_pair_name(scene_, d.a, d.b) + " (" +
                ptc_type_name(d.type) + ") at " + fmt_point(d.point_B);
     return obs;
   }
@@ -326,7 +342,7 @@ MotionOutcome Motion::run() {
     DriveSystem sys;
     for (const Track& t : tracks_)
       if (!add_drive(t, F, sys))
-        return fail("contact " + pair_name(scene_, t.c.a, t.c.b) +
+        return fail("contact " + element_pair_name(scene_, t.c.a, t.c.b) +
                     " has no rates at step " + std::to_string(step_));
     auto s = sys.solve();
     if (!s)
@@ -389,6 +405,7 @@ MotionOutcome Motion::run() {
       continue;
     }
 
+    if (counters_.measure) measure_midpoint(X_, *Y);
     X_ = *Y;
     tracks_ = moved;
     ++step_;

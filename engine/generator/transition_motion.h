@@ -5,6 +5,7 @@
 // every event (a contact reaching an element boundary, a contact separating, a collision) by
 // bisection rather than at the step grid, and stop at a configuration of the target CF or at
 // the first infeasibility, saying why.
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -33,6 +34,17 @@ struct MotionCounters {
   long detections = 0;
   long pair_solves = 0;
   long steps = 0;
+  // Discretisation measurements (only when `measure` is set): see GraphStats.
+  bool measure = false;
+  double max_keep_drift = 0;
+  double max_step_penetration = 0;
+  void merge(const MotionCounters& o) {
+    detections += o.detections;
+    pair_solves += o.pair_solves;
+    steps += o.steps;
+    max_keep_drift = std::max(max_keep_drift, o.max_keep_drift);
+    max_step_penetration = std::max(max_step_penetration, o.max_step_penetration);
+  }
 };
 
 // One accepted step, for observers (animations, frame-by-frame debugging).

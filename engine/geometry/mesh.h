@@ -17,6 +17,14 @@ struct SolidMesh {
   // One polyline per Solid::edges entry (closed curves repeat their first point at the end).
   std::vector<std::vector<Eigen::Vector3d>> edge_polylines;
   double chordal_error = 0;                // the bound it was built for
+  // Exact outward unit normal of each triangle's face at each of its corners (3 per triangle,
+  // corner k of triangle t at 3t + k): at vertices on an edge `normals` holds the mean of the
+
+  std::vector<Eigen::Vector3d> corner_normals;
+  // The Solid::edges index of the edge each vertex lies on (-1 inside a face or at a vertex),
+  // and the Solid::vertices index of the vertex it is (-1 otherwise).
+  std::vector<int> vertex_edge;
+  std::vector<int> vertex_vertex;
 };
 
 }  // namespace pcsg

@@ -29,6 +29,11 @@ struct Face {
   Eigen::Vector3d interior_point;    // a point of the patch, away from its boundary
   Eigen::AlignedBox3d bbox;
   double area = 0;
+  // Exact points of the patch (a coarse mesh's vertices, projected onto the surface): they
+  // tell the patches of one surface apart (face_at) and feed the straight-segment check.
+  std::vector<Eigen::Vector3d> samples;
+  // Largest |principal curvature| found on the patch (1/length): sets the mesh spacing.
+  double max_curvature = 0;
 };
 
 struct Edge {
