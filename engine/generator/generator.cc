@@ -1,5 +1,6 @@
 #include "engine/generator/generator.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <thread>
@@ -200,6 +201,13 @@ StateGraph Builder::run() {
   // candidates already in the graph add nothing (Section IV: one seed per local maximum).
   for (const SeedCandidate& sc : seeds) {
     if (cancelled()) break;
+    // An automatic candidate whose CF the graph already has adds a seed only for a separate
+    // region, and a failed connectivity motion does not prove one; it is left out (a CF that
+    // is new to the graph always seeds). Listed seeds are checked for connectivity.
+    if (scene_.spec.auto_seeds &&
+        std::any_of(graph_.states.begin(), graph_.states.end(),
+                    [&](const State& s) { return s.cf == sc.cf; }))
+      continue;
     const int existing = find_state(sc.cf, sc.pose);
     if (existing >= 0) {
       if (!scene_.spec.auto_seeds) graph_.states[existing].seed = true;

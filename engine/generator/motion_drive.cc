@@ -3,10 +3,21 @@
 #include <Eigen/SVD>
 #include <limits>
 
+#include "engine/contact/pair_solver.h"
+
 namespace pcsg {
 
 Eigen::Vector3d normal_in_A(const Pose& X, const PointContact& c) {
   return -(X.quaternion.conjugate() * c.normal_B);
+}
+
+std::optional<PointContact> track_pair(const SceneGeometry& scene, const Pose& X,
+                                       ElementId a, ElementId b, PtcType type,
+                                       const Eigen::Vector3d& start_A,
+                                       const Eigen::Vector3d& start_B) {
+  PairSolution sol = solve_pair_problem(scene, X, a, b, type, start_A, start_B);
+  if (!sol.converged) return std::nullopt;
+  return std::move(sol.contact);
 }
 
 std::optional<ContactRates> contact_rates(const SceneGeometry& scene, const Pose& X,
@@ -24,7 +35,7 @@ std::optional<ContactRates> contact_rates(const SceneGeometry& scene, const Pose
       s[i] = sign * eps;
       const Pose Xi = frame.apply(X, s);
       ++pair_solves;
-      moved = solve_pair(scene, Xi, c.a, c.b, c.type, c.p_A, c.p_B);
+      moved = track_pair(scene, Xi, c.a, c.b, c.type, c.p_A, c.p_B);
       if (moved) {
         h = sign * eps;
         r.normal_A.col(i) = (normal_in_A(Xi, *moved) - nA0) / h;

@@ -19,6 +19,15 @@ struct ContactRates {
   Eigen::Matrix<double, 3, 6> normal_B;  // B's outward normal at the contact, B's frame
 };
 
+// Follows one contact's pair problem to the pose X from its previous points, without asking
+// whether the solution still lies in the elements' interiors: during a motion the contact's
+// classification is the detector's call (transition_motion.cc), so that a contact can be
+// followed exactly up to and across an element boundary.
+std::optional<PointContact> track_pair(const SceneGeometry& scene, const Pose& X,
+                                       ElementId a, ElementId b, PtcType type,
+                                       const Eigen::Vector3d& start_A,
+                                       const Eigen::Vector3d& start_B);
+
 std::optional<ContactRates> contact_rates(const SceneGeometry& scene, const Pose& X,
                                           const TwistFrame& frame, const PointContact& c,
                                           long& pair_solves);

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "engine/generator/motion_drive.h"
+#include "engine/contact/contact_formation.h"
 
 namespace pcsg {
 namespace {
@@ -42,7 +44,7 @@ std::string fmt_point(const Eigen::Vector3d& p) {
 }
 
 struct Observation {
-  enum Kind { Same, Event, Collision, KeptChanged } kind = Same;
+  enum Kind { Same, Event, Missing, Collision, KeptChanged } kind = Same;
   int track = -1;            // for Event / KeptChanged
   PointContact detected;     // the contact that differs
   std::string what;          // for Collision / KeptChanged
@@ -62,15 +64,23 @@ class Motion {
   }
 
   MotionOutcome run();
-  // CF-compliant travel toward `to` keeping every tracked contact (all Keep).
-  bool travel_to(const Pose& to);
+  // CF-compliant travel toward `to` keeping every tracked contact (all Keep). With
+  // `by_contacts` the drive moves each contact's points on A and on B toward the target's
+  // (sliding and rolling over the elements); otherwise it moves the pose straight toward it.
+  bool travel_to(const Pose& to, bool by_contacts);
 
  private:
   TwistFrame frame_at(const Pose& X) const { return {X.apply(scene_.A.bbox.center()), size_}; }
   bool resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const;
-  std::optional<Pose> correct(Pose Y, std::vector<Track>& tracks) const;
+  // Re-projects Y onto the maintained contacts. On failure, `lost` names the contact whose
+  // pair solve failed (its point left its element), or is -1 when Newton did not converge.
+  std::optional<Pose> correct(Pose Y, std::vector<Track>& tracks, int* lost = nullptr) const;
+
   Observation classify(const Pose& Y, const std::vector<Track>& tracks) const;
   bool add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys);
+  void add_edge_rotation(const Track& t, const TwistFrame& F,
+                         const Eigen::Matrix<double, 3, 6>& dn, const Eigen::Vector3d& dir,
+                         DriveSystem& sys) const;
   void emit(const char* phase, const std::vector<PointContact>& contacts,
             const Observation* collision = nullptr) const;
   MotionOutcome fail(const std::string& why) const {
@@ -129,7 +139,7 @@ void Motion::measure_midpoint(const Pose& X, const Pose& Y) {
   for (const Track& t : tracks_) {
     if (!maintained(t)) continue;
     ++counters_.pair_solves;
-    auto c = solve_pair(scene_, mid, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+    auto c = track_pair(scene_, mid, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
     if (c)
       counters_.max_keep_drift = std::max(counters_.max_keep_drift, c->residual.cwiseAbs().maxCoeff());
   }
@@ -144,7 +154,7 @@ bool Motion::resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const
     Track& t = tracks[i];
     if (!maintained(t)) continue;
     ++counters_.pair_solves;
-    auto s = solve_pair(scene_, Y, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+    auto s = track_pair(scene_, Y, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
     if (!s) {
       if (lost) *lost = static_cast<int>(i);
       return false;
@@ -154,9 +164,10 @@ bool Motion::resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const
   return true;
 }
 
-std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks) const {
+std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks, int* lost) const {
+  if (lost) *lost = -1;
   for (int it = 0; it < kCorrectionIterations; ++it) {
-    if (!resolve(Y, tracks, nullptr)) return std::nullopt;
+    if (!resolve(Y, tracks, lost)) return std::nullopt;
     int rows = 0;
     for (const Track& t : tracks)
       if (maintained(t)) rows += static_cast<int>(t.c.residual.size());
@@ -243,7 +254,32 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) co
                ptc_type_name(d.type) + ") at " + fmt_point(d.point_B);
     return obs;
   }
+  if (obs.kind == Observation::Event) return obs;
+  // A maintained contact the detector no longer sees has left its elements' region.
+  for (size_t i = 0; i < tracks.size(); ++i)
+    if (!matched[i] && maintained(tracks[i])) {
+      obs.kind = Observation::Missing;
+      obs.track = static_cast<int>(i);
+      obs.what = "contact " + element_pair_name(scene_, tracks[i].c.a, tracks[i].c.b) +
+                 " leaves its elements at " + fmt_point(tracks[i].c.point_B);
+      return obs;
+    }
   return obs;
+}
+
+void Motion::add_edge_rotation(const Track& t, const TwistFrame& F,
+                               const Eigen::Matrix<double, 3, 6>& dn, const Eigen::Vector3d& dir,
+                               DriveSystem& sys) const {
+  // The paper's pure rotation about the tangent line of the edge at the contact point
+  // (Section III-C): the one motion that turns the contact normal across the edge's normal
+  // cone while the edge stays in contact. Turned the way that moves the normal toward `dir`.
+  const Eigen::Vector3d axis = t.plan.changes_a ? t.c.tangent_a_B : t.c.tangent_b_B;
+  if (axis.norm() == 0 || dir.norm() == 0) return;
+  Twist rot;
+  rot.head<3>() = axis.cross(F.origin_B - t.c.point_B);
+  rot.tail<3>() = axis * F.length;
+  if ((dn * rot).dot(dir) < 0) rot = -rot;
+  sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rot / TwistFrame::displacement(rot), 1.0);
 }
 
 bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
@@ -274,7 +310,12 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   const Eigen::Matrix<double, 3, 6>& dx = on_a ? rates->point_A : rates->point_B;
   const Eigen::Matrix<double, 3, 6>& dx_other = on_a ? rates->point_B : rates->point_A;
   const Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * size_;
-  const bool approaching = element_dimension(goal) < element_dimension(current);
+  // Toward a lower-dimensional element (face to edge, edge to vertex) or away from one: in
+  // the drive phase from the current element to the goal; when settling, from the element the
+  // contact left to the one it is on now.
+  const ElementId from = t.phase == Phase::Drive ? current : t.left;
+  const ElementId to = t.phase == Phase::Drive ? goal : current;
+  const bool approaching = element_dimension(to) < element_dimension(from);
 
   if (t.phase == Phase::Drive) {
     if (approaching) {
@@ -291,7 +332,8 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
       used_rotation_drive_ = true;
       Eigen::Vector3d goal_n = cone_middle(S, goal, x);
       Eigen::Vector3d dir = goal_n - n;
-      if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
+      if (current.kind == ElementKind::Edge) add_edge_rotation(t, F, dn, dir, sys);
+      else if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
       if (current.kind == ElementKind::Vertex) {
         auto u = direction_toward(S, goal, x, n);
         if (u) sys.add_drive(dx, *u, 1.0);
@@ -303,7 +345,8 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   if (approaching) {
     used_rotation_drive_ = true;
     const Eigen::Vector3d dir = cone_middle(S, current, x) - n;
-    if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
+    if (current.kind == ElementKind::Edge) add_edge_rotation(t, F, dn, dir, sys);
+    else if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
     if (variant_.fix_unchanged_side) sys.add_drive(dx_other, Eigen::Vector3d::Zero(), 0.3);
   } else if (current.kind == ElementKind::Face) {
     // `current` is the new face now: slide away from the edge or vertex it was reached from.
@@ -366,8 +409,8 @@ MotionOutcome Motion::run() {
     if (obs.kind != Observation::Same) {
       // Locate the event between the last good pose and this one.
       double lo = 0, hi = frac;
-      Pose Y_hi = *Y;
-      std::vector<Track> tracks_hi = moved;
+      Pose Y_hi = *Y, Y_lo = X_;
+      std::vector<Track> tracks_hi = moved, tracks_lo = tracks_;
       for (int k = 0; k < kBisections; ++k) {
         const double mid = 0.5 * (lo + hi);
         std::vector<Track> tm = tracks_;
@@ -379,6 +422,8 @@ MotionOutcome Motion::run() {
         Observation om = classify(*Ym, tm);
         if (om.kind == Observation::Same) {
           lo = mid;
+          Y_lo = *Ym;
+          tracks_lo = tm;
         } else {
           hi = mid;
           Y_hi = *Ym;
@@ -388,6 +433,28 @@ MotionOutcome Motion::run() {
       }
       ++step_;
       ++counters_.steps;
+      if (obs.kind == Observation::Missing &&
+          tracks_[obs.track].plan.action == ContactAction::Change &&
+          tracks_[obs.track].phase == Phase::Drive) {
+        // The changing contact is at its element's boundary (to 2^-30 of a step): follow it on
+        // the new elements from here; settling carries it into their region.
+        Track& t = tracks_lo[obs.track];
+        ++counters_.pair_solves;
+        auto next = track_pair(scene_, Y_lo, t.plan.new_a, t.plan.new_b, t.plan.new_type,
+                               t.c.p_A, t.c.p_B);
+        if (!next)
+          return fail(obs.what + " but does not continue as " +
+                      element_pair_name(scene_, t.plan.new_a, t.plan.new_b) + " (step " +
+                      std::to_string(step_) + ")");
+        t.left = t.plan.changes_a ? t.c.a : t.c.b;
+        t.c = *next;
+        t.phase = Phase::Settle;
+        t.settle_left = kSettleSteps;
+        X_ = Y_lo;
+        tracks_ = tracks_lo;
+        emit("event", obs.contacts);
+        continue;
+      }
       if (obs.kind != Observation::Event) {
         X_ = Y_hi;
         emit("collision", obs.contacts, &obs);
@@ -416,7 +483,7 @@ MotionOutcome Motion::run() {
         t.phase = Phase::Done;
       if (t.plan.action == ContactAction::Remove && t.phase != Phase::Done) {
         ++counters_.pair_solves;
-        auto sep = solve_pair(scene_, X_, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
+        auto sep = track_pair(scene_, X_, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
         // Separated by half a step: clearly apart, yet the witness stays near the boundary
         // it was reached through.
         if (!sep || sep->gap >= 0.5 * h_)
@@ -454,7 +521,7 @@ MotionOutcome Motion::run() {
   return o;
 }
 
-bool Motion::travel_to(const Pose& to) {
+bool Motion::travel_to(const Pose& to, bool by_contacts) {
   const Eigen::Vector3d centre_A = scene_.A.bbox.center();
   // Remaining motion as a scaled twist about A's centre.
   auto remaining = [&](const Pose& X) {
@@ -464,15 +531,46 @@ bool Motion::travel_to(const Pose& to) {
     s.tail<3>() = aa.axis() * aa.angle() * size_;
     return s;
   };
-  double best = TwistFrame::displacement(remaining(X_));
+  // The target's contacts, matched to the tracked ones by pair (nearest point).
+  std::vector<PointContact> goal;
+  if (by_contacts) {
+    ++counters_.detections;
+    const ContactReport rep = detect_contacts(scene_, to);
+    if (rep.contacts.size() != tracks_.size()) return false;
+    std::vector<bool> used(rep.contacts.size(), false);
+    for (const Track& t : tracks_) {
+      int best = -1;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (size_t j = 0; j < rep.contacts.size(); ++j) {
+        const PointContact& g = rep.contacts[j];
+        if (used[j] || !(g.a == t.c.a && g.b == t.c.b)) continue;
+        const double d = (g.p_B - t.c.p_B).norm() + (g.p_A - t.c.p_A).norm();
+        if (d < best_d) best = static_cast<int>(j), best_d = d;
+      }
+      if (best < 0) return false;
+      used[best] = true;
+      goal.push_back(rep.contacts[best]);
+    }
+  }
+  auto distance = [&](const Pose& X) {
+    double d = TwistFrame::displacement(remaining(X));
+    for (size_t i = 0; i < goal.size(); ++i)
+      d = std::max({d, (goal[i].p_B - tracks_[i].c.p_B).norm(),
+                    (goal[i].p_A - tracks_[i].c.p_A).norm()});
+    return d;
+  };
+  double best = distance(X_);
   int stalled = 0;
   // No progress for this many steps means the drive is blocked (a region boundary or a
-  // collision lies between): the witnesses are then not shown to be connected.
+  // collision lies between): the witnesses are then not shown to be connected this way.
   constexpr int kMaxStalled = 8;
+  // Weight of the straight pose drive when the contacts lead: enough to settle the spin about
+  // the normal once the contact points have arrived.
+  constexpr double kPoseWeightByContacts = 0.2;
   while (step_ < max_steps_) {
     const Twist rem = remaining(X_);
-    const double dist = TwistFrame::displacement(rem);
-    if (dist <= h_) {
+    const double dist = distance(X_);
+    if (TwistFrame::displacement(rem) <= h_) {
       // Last hop onto the target itself.
       std::vector<Track> moved = tracks_;
       auto Y = correct(to, moved);
@@ -487,7 +585,18 @@ bool Motion::travel_to(const Pose& to) {
     const TwistFrame F = frame_at(X_);
     DriveSystem sys;
     for (const Track& t : tracks_) sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
-    sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rem / dist, 1.0);
+    const double rem_norm = TwistFrame::displacement(rem);
+    sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rem / rem_norm,
+                  by_contacts ? kPoseWeightByContacts : 1.0);
+    for (size_t i = 0; i < goal.size(); ++i) {
+      const auto rates = contact_rates(scene_, X_, F, tracks_[i].c, counters_.pair_solves);
+      if (!rates) return false;
+      const Eigen::Vector3d dB = goal[i].p_B - tracks_[i].c.p_B;
+      const Eigen::Vector3d dA = goal[i].p_A - tracks_[i].c.p_A;
+      const double scale = std::max({dB.norm(), dA.norm(), h_});
+      sys.add_drive(rates->point_B, dB / scale, 1.0);
+      sys.add_drive(rates->point_A, dA / scale, 1.0);
+    }
     auto s = sys.solve();
     if (!s) return false;
     *s *= std::min(h_, dist) / TwistFrame::displacement(*s);
@@ -510,9 +619,15 @@ bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pos
   const ContactReport rep = detect_contacts(scene, from);
   if (!(ContactFormation::of(rep.contacts) == cf)) return false;
   std::vector<Track> tracks;
-  for (const PointContact& c : rep.contacts) tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}});
-  Motion m(scene, from, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
-  return m.travel_to(to);
+  for (const PointContact& c : rep.contacts)
+    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}});
+  // First straight toward the target pose, then, if that is blocked, by sliding and rolling
+  // the contact points toward the target's.
+  for (bool by_contacts : {false, true}) {
+    Motion m(scene, from, tracks, cf, MotionVariant{}, counters, nullptr);
+    if (m.travel_to(to, by_contacts)) return true;
+  }
+  return false;
 }
 
 std::string MotionVariant::name() const {

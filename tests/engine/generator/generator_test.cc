@@ -1,0 +1,95 @@
+#include "engine/generator/generator.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/contact/contact.h"
+#include "engine/generator/graph_io.h"
+#include "generator_test_support.h"
+
+namespace pcsg {
+namespace {
+
+using testing::GraphSignature;
+using testing::signature;
+
+struct Generated {
+  SceneGeometry scene;
+  StateGraph graph;
+};
+
+Generated generate(const SceneSpec& spec, int threads = 1) {
+  Generated g{build_scene_geometry(spec), {}};
+  GeneratorOptions opt;
+  opt.threads = threads;
+  g.graph = generate_graph(g.scene, opt);
+  return g;
+}
+
+// Every witness, re-checked by the exact contact computation, carries exactly its state's CF
+// and does not penetrate; its contacts are exact.
+void expect_witnesses_valid(const Generated& g) {
+  for (const State& s : g.graph.states) {
+    const ContactReport rep = detect_contacts(g.scene, s.pose);
+    EXPECT_FALSE(rep.penetrating()) << "state " << s.id << " " << s.cf.str(g.scene);
+    EXPECT_EQ(ContactFormation::of(rep.contacts).str(g.scene), s.cf.str(g.scene))
+        << "state " << s.id;
+    for (const PointContact& c : rep.contacts)
+      EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale)
+          << "state " << s.id << ": the witness's contacts are exact to 1e-10 of the size";
+  }
+  // Links join existing states; LN links never raise cardinality (Section II-D).
+  for (const Link& l : g.graph.links) {
+    ASSERT_GE(l.from, 0);
+    ASSERT_LT(l.to, static_cast<int>(g.graph.states.size()));
+    if (l.kind == LinkKind::LN)
+      EXPECT_LE(g.graph.states[l.to].cf.cardinality(), g.graph.states[l.from].cf.cardinality());
+  }
+}
+
+TEST(Generator, Example1WitnessesAreExactAndTheSeedHasTwoContacts) {
+  const Generated g = generate(load_scene_file(testing::scene_path("example1.yaml")));
+  ASSERT_FALSE(g.graph.states.empty());
+  expect_witnesses_valid(g);
+  const State& seed = g.graph.states.front();
+  EXPECT_TRUE(seed.seed);
+  EXPECT_EQ(seed.cf.str(g.scene), "{(fA-f1, 2)}");
+  // The paper's complete graph has these single-contact states (Fig. 6).
+  const GraphSignature sig = signature(g.graph, g.scene);
+  for (const char* cf : {"{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-f2, 1)}", "{(fA-e2, 1)}",
+                         "{(fA-f3, 1)}"})
+    EXPECT_NE(std::find(sig.states.begin(), sig.states.end(), cf), sig.states.end())
+        << cf << " missing; states:\n" << testing::join(sig.states);
+}
+
+TEST(Generator, Example2WitnessesAreExact) {
+  const Generated g = generate(load_scene_file(testing::scene_path("example2.yaml")));
+  ASSERT_FALSE(g.graph.states.empty());
+  expect_witnesses_valid(g);
+}
+
+TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  const Generated one = generate(spec, 1), two = generate(spec, 2);
+  GraphJsonOptions opt;
+  opt.include_timing = false;
+  EXPECT_EQ(graph_to_json(one.graph, one.scene, opt), graph_to_json(two.graph, two.scene, opt));
+}
+
+TEST(Generator, GraphIsInvariantUnderScalingAndRigidMotion) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  const Generated ref = generate(spec);
+  const GraphSignature want = signature(ref.graph, ref.scene);
+  Pose X;
+  X.position = {3.0, -2.0, 5.0};
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 2).normalized()));
+  for (const SceneSpec& variant :
+       {scaled_scene(spec, 1e-3), scaled_scene(spec, 1e3), moved_scene(spec, X)}) {
+    const Generated g = generate(variant);
+    const GraphSignature got = signature(g.graph, g.scene);
+    EXPECT_EQ(got.states, want.states) << "got:\n" << testing::join(got.states);
+    EXPECT_EQ(got.links, want.links) << "got:\n" << testing::join(got.links);
+  }
+}
+
+}  // namespace
+}  // namespace pcsg
