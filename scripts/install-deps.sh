@@ -4,7 +4,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config libeigen3-dev libfcl-dev libyaml-cpp-dev nlohmann-json3-dev
       libcli11-dev libgtest-dev libbenchmark-dev)
-render_pkgs=(libosmesa6-dev libimgui-dev libstb-dev libassimp-dev libgraphviz-dev)
+render_pkgs=(libosmesa6-dev libimgui-dev libstb-dev libassimp-dev libgraphviz-dev fonts-dejavu-core)
 if [[ "${1:-}" != "--no-render" ]]; then pkgs+=("${render_pkgs[@]}"); fi
 
 missing=()
