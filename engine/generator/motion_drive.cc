@@ -105,6 +105,58 @@ Twist minimum_norm_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
   return d;
 }
 
+namespace {
+
+int nearest_sample(const Edge& e, const Eigen::Vector3d& x) {
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < e.samples.size(); ++i) {
+    const double d = (e.samples[i].point - x).squaredNorm();
+    if (d < best_d) best = static_cast<int>(i), best_d = d;
+  }
+  return best;
+}
+
+}  // namespace
+
+Eigen::Vector3d step_toward_on_element(const Solid& S, ElementId el, const Eigen::Vector3d& x,
+                                       const Eigen::Vector3d& target, const Eigen::Vector3d& n) {
+  const Eigen::Vector3d chord = target - x;
+  if (el.kind == ElementKind::Vertex) return Eigen::Vector3d::Zero();
+  if (el.kind == ElementKind::Edge) {
+    const Edge& e = S.edges[el.index];
+    if (e.samples.size() < 2) return chord;
+    const int i = nearest_sample(e, x), j = nearest_sample(e, target);
+    double ds = e.samples[j].s - e.samples[i].s;
+    if (e.closed) {
+      // The shorter way round.
+      if (ds > 0.5 * e.length) ds -= e.length;
+      if (ds < -0.5 * e.length) ds += e.length;
+    }
+    Eigen::Vector3d t = e.samples[i].tangent;
+    return t * ds;
+  }
+  const Eigen::Vector3d proj = chord - chord.dot(n) * n;
+  // Projected chord shorter than this fraction of the chord: the target is nearly opposite.
+  constexpr double kOppositeFraction = 0.3;
+  if (proj.norm() >= kOppositeFraction * chord.norm()) return proj;
+  Eigen::Vector3d side = n.cross(chord);
+  if (side.norm() == 0) side = n.unitOrthogonal();
+  return proj + side.normalized() * chord.norm();
+}
+
+ElementId nearest_boundary(const Solid& S, ElementId face, const Eigen::Vector3d& x) {
+  ElementId best = face;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int e : S.faces[face.index].edges) {
+    const Edge& edge = S.edges[e];
+    if (edge.samples.empty()) continue;
+    const double d = (edge.samples[nearest_sample(edge, x)].point - x).norm();
+    if (d < best_d) best = {ElementKind::Edge, e}, best_d = d;
+  }
+  return best;
+}
+
 int element_dimension(ElementId el) {
   return el.kind == ElementKind::Face ? 2 : el.kind == ElementKind::Edge ? 1 : 0;
 }

@@ -63,6 +63,16 @@ Eigen::Vector3d face_normal(const Solid& S, int face, const Eigen::Vector3d& x);
 // Unit direction on the tangent plane of face `face` at x pointing from its boundary element
 // `from` into the face's interior.
 Eigen::Vector3d into_face(const Solid& S, int face, ElementId from, const Eigen::Vector3d& x);
+// Direction (S's frame, on the tangent plane at x) in which a contact point on element `el`
+// of S should move to reach `target` on the same element, scaled by the distance still to go:
+// along an edge by arc length (the shorter way round a closed curve); on a face along the chord
+// projected on the tangent plane, turned sideways when the target lies nearly opposite (on a
+// surface of revolution the projected chord of antipodal points vanishes).
+Eigen::Vector3d step_toward_on_element(const Solid& S, ElementId el, const Eigen::Vector3d& x,
+                                       const Eigen::Vector3d& target, const Eigen::Vector3d& n);
+// The boundary element (edge or vertex) of face `face` nearest to x; the face itself when it
+// has none.
+ElementId nearest_boundary(const Solid& S, ElementId face, const Eigen::Vector3d& x);
 // Dimension of an element: 2 face, 1 edge, 0 vertex.
 int element_dimension(ElementId el);
 

@@ -583,28 +583,61 @@ bool Motion::travel_to(const Pose& to, bool by_contacts) {
       return false;
     }
     const TwistFrame F = frame_at(X_);
-    DriveSystem sys;
-    for (const Track& t : tracks_) sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
-    const double rem_norm = TwistFrame::displacement(rem);
-    sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rem / rem_norm,
-                  by_contacts ? kPoseWeightByContacts : 1.0);
-    for (size_t i = 0; i < goal.size(); ++i) {
-      const auto rates = contact_rates(scene_, X_, F, tracks_[i].c, counters_.pair_solves);
-      if (!rates) return false;
-      const Eigen::Vector3d dB = goal[i].p_B - tracks_[i].c.p_B;
-      const Eigen::Vector3d dA = goal[i].p_A - tracks_[i].c.p_A;
-      const double scale = std::max({dB.norm(), dA.norm(), h_});
-      sys.add_drive(rates->point_B, dB / scale, 1.0);
-      sys.add_drive(rates->point_A, dA / scale, 1.0);
+    std::vector<ContactRates> rates;
+    for (const Track& t : tracks_) {
+      auto r = contact_rates(scene_, X_, F, t.c, counters_.pair_solves);
+      if (!r) return false;
+      rates.push_back(*r);
     }
-    auto s = sys.solve();
-    if (!s) return false;
-    *s *= std::min(h_, dist) / TwistFrame::displacement(*s);
-    std::vector<Track> moved = tracks_;
-    auto Y = correct(F.apply(X_, *s), moved);
-    if (!Y || classify(*Y, moved).kind != Observation::Same) return false;
-    X_ = *Y;
-    tracks_ = moved;
+    // Contacts that the last attempt carried out of their elements get a drive back into them:
+    // the motion then slides along the region's boundary instead of crossing it.
+    std::vector<bool> keep_inside(tracks_.size(), false);
+    bool stepped = false;
+    for (int attempt = 0; attempt <= static_cast<int>(tracks_.size()) && !stepped; ++attempt) {
+      DriveSystem sys;
+      for (const Track& t : tracks_) sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
+      const double rem_norm = TwistFrame::displacement(rem);
+      sys.add_drive(Eigen::MatrixXd::Identity(6, 6), rem / rem_norm,
+                    by_contacts ? kPoseWeightByContacts : 1.0);
+      for (size_t i = 0; i < goal.size(); ++i) {
+        const PointContact& c = tracks_[i].c;
+        const Eigen::Vector3d dB =
+            step_toward_on_element(scene_.B, c.b, c.p_B, goal[i].p_B, c.normal_B);
+        const Eigen::Vector3d dA =
+            step_toward_on_element(scene_.A, c.a, c.p_A, goal[i].p_A, normal_in_A(X_, c));
+        const double scale = std::max({dB.norm(), dA.norm(), h_});
+        sys.add_drive(rates[i].point_B, dB / scale, 1.0);
+        sys.add_drive(rates[i].point_A, dA / scale, 1.0);
+      }
+      for (size_t i = 0; i < tracks_.size(); ++i) {
+        if (!keep_inside[i]) continue;
+        const PointContact& c = tracks_[i].c;
+        if (c.b.kind == ElementKind::Face)
+          sys.add_drive(rates[i].point_B,
+                        into_face(scene_.B, c.b.index, nearest_boundary(scene_.B, c.b, c.p_B), c.p_B),
+                        1.0);
+        if (c.a.kind == ElementKind::Face)
+          sys.add_drive(rates[i].point_A,
+                        into_face(scene_.A, c.a.index, nearest_boundary(scene_.A, c.a, c.p_A), c.p_A),
+                        1.0);
+      }
+      auto s = sys.solve();
+      if (!s) return false;
+      *s *= std::min(h_, dist) / TwistFrame::displacement(*s);
+      std::vector<Track> moved = tracks_;
+      auto Y = correct(F.apply(X_, *s), moved);
+      if (!Y) return false;
+      const Observation ob = classify(*Y, moved);
+      if (ob.kind == Observation::Missing && !keep_inside[ob.track]) {
+        keep_inside[ob.track] = true;
+        continue;
+      }
+      if (ob.kind != Observation::Same) return false;
+      X_ = *Y;
+      tracks_ = moved;
+      stepped = true;
+    }
+    if (!stepped) return false;
     ++step_;
     ++counters_.steps;
   }
