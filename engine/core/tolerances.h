@@ -74,6 +74,9 @@ struct Tolerances {
   // (quadratic convergence needs < 10 from a motion step away).
   double projection_step = 5e-2;
   int projection_max_iterations = 60;
+  // Starting points of one element pair's solves closer than this are one (projection seeds):
+  // two separate distance minima of a pair lie a curvature radius apart, >= 0.1 L here.
+  double seed_separation = 5e-2;
   // A surface holds a straight segment when g(p + t d), t in units of L, has all its t-terms
   // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line
   // by ~1e-9 L over a length L, like contact_gap, while round-off is ~1e-14.
@@ -114,6 +117,7 @@ struct Tolerances {
     t.curvature /= L;  // a curvature: 1/length
     t.candidate_band *= L;
     t.projection_step *= L;
+    t.seed_separation *= L;
     return t;
   }
 };

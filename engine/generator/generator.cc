@@ -21,10 +21,25 @@ std::vector<MotionVariant> motion_variants() {
 
 namespace {
 
+// Whether `upper` is `lower` plus exactly one PtC: then `lower` is reached from `upper` by
+// removing that contact, the reverse of the motion that met it (an LN transition down).
+bool adds_one_contact(const ContactFormation& lower, const ContactFormation& upper) {
+  if (upper.cardinality() != lower.cardinality() + 1) return false;
+  for (const PtcCount& e : lower.entries()) {
+    const auto& u = upper.entries();
+    const bool covered = std::any_of(u.begin(), u.end(), [&](const PtcCount& x) {
+      return x.a == e.a && x.b == e.b && x.type == e.type && x.count >= e.count;
+    });
+    if (!covered) return false;
+  }
+  return true;
+}
+
 struct TryResult {
   Candidate candidate;
   MotionOutcome outcome;
   MotionCounters counters;
+  std::vector<Discovery> discovered;  // higher-cardinality states met by failed motions
 };
 
 // Whether a variant differs from an earlier one for this plan (turns only matter when a contact
@@ -61,6 +76,7 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
                                               v, r.counters);
       r.candidate.motion = o.motion;
       r.candidate.steps = o.steps;
+      if (o.discovered) r.discovered.push_back(*o.discovered);
       if (o.feasible) {
         r.candidate.feasible = true;
         r.outcome = std::move(o);
@@ -73,6 +89,14 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
   r.candidate.reason = reasons;
   return r;
 }
+
+// An upward probe of a state: a push toward a point (pivot < 0) or a turn about an axis
+// through the point of contact `pivot`.
+struct Probe {
+  int state;
+  int pivot;
+  Eigen::Vector3d vector;
+};
 
 class Builder {
  public:
@@ -92,6 +116,9 @@ class Builder {
                 const std::vector<PointContact>& contacts, bool seed, int depth);
   void grow(int seed_id);
   void add_link(int from, int to, const std::string& motion);
+  // Where the upward probes of a state push A's centre: toward each element of B that none
+  // of its contacts touches (a face's interior point, an edge's middle, a vertex).
+  std::vector<Eigen::Vector3d> probe_goals(const State& s) const;
 
   const SceneGeometry& scene_;
   GeneratorOptions options_;
@@ -100,6 +127,8 @@ class Builder {
   StateGraph graph_;
   MotionCounters counters_;
   std::map<std::pair<int, int>, bool> linked_;
+  // States of higher cardinality met by motions from state `from`, in merge order.
+  std::vector<std::pair<int, Discovery>> discoveries_;
 };
 
 int Builder::find_state(const ContactFormation& cf, const Pose& pose) {
@@ -136,6 +165,23 @@ void Builder::add_link(int from, int to, const std::string& motion) {
   }
 }
 
+std::vector<Eigen::Vector3d> Builder::probe_goals(const State& s) const {
+  auto touched = [&](ElementId b) {
+    return std::any_of(s.contacts.begin(), s.contacts.end(),
+                       [&](const PointContact& c) { return c.b == b; });
+  };
+  std::vector<Eigen::Vector3d> goals;
+  const Solid& B = scene_.B;
+  for (size_t f = 0; f < B.faces.size(); ++f)
+    if (!touched({ElementKind::Face, static_cast<int>(f)})) goals.push_back(B.faces[f].interior_point);
+  for (size_t e = 0; e < B.edges.size(); ++e)
+    if (!touched({ElementKind::Edge, static_cast<int>(e)}) && !B.edges[e].samples.empty())
+      goals.push_back(B.edges[e].samples[B.edges[e].samples.size() / 2].point);
+  for (size_t v = 0; v < B.vertices.size(); ++v)
+    if (!touched({ElementKind::Vertex, static_cast<int>(v)})) goals.push_back(B.vertices[v].point);
+  return goals;
+}
+
 void Builder::grow(int seed_id) {
   std::vector<int> frontier = {seed_id};
   int level = 0;
@@ -145,16 +191,53 @@ void Builder::grow(int seed_id) {
     for (int id : frontier)
       for (Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts))
         jobs.emplace_back(id, std::move(h));
+    // And the upward probes of each state: toward every element of B it does not touch.
+    std::vector<Probe> probes;
+    if (options_.probe_upward)
+      for (int id : frontier) {
+        for (const Eigen::Vector3d& goal : probe_goals(graph_.states[id]))
+          probes.push_back({id, -1, goal});
+        // Tipping about each contact: about an edge's tangent, and about the two axes of the
+        // contact plane, each way.
+        const State& st = graph_.states[id];
+        for (size_t c = 0; c < st.contacts.size(); ++c) {
+          const PointContact& pc = st.contacts[c];
+          std::vector<Eigen::Vector3d> axes;
+          if (pc.tangent_b_B.norm() > 0) axes.push_back(pc.tangent_b_B);
+          if (pc.tangent_a_B.norm() > 0) axes.push_back(pc.tangent_a_B);
+          if (axes.empty() && pc.normal_B.norm() > 0) {
+            const Eigen::Vector3d u = pc.normal_B.unitOrthogonal();
+            axes.push_back(u);
+            axes.push_back(pc.normal_B.cross(u));
+          }
+          for (const Eigen::Vector3d& ax : axes)
+            for (double sign : {1.0, -1.0})
+              probes.push_back({id, static_cast<int>(c), sign * ax});
+        }
+      }
     std::vector<TryResult> results(jobs.size());
+    std::vector<std::optional<Discovery>> probed(probes.size());
+    std::vector<MotionCounters> probe_counters(probes.size());
     std::atomic<size_t> next{0};
     auto worker = [&] {
-      for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
+      for (size_t j; (j = next.fetch_add(1)) < jobs.size() + probes.size();) {
         if (cancelled()) break;
-        results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
-                                    options_.measure_discretisation);
+        if (j < jobs.size()) {
+          results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
+                                      options_.measure_discretisation);
+        } else {
+          const Probe& p = probes[j - jobs.size()];
+          const State& st = graph_.states[p.state];
+          probed[j - jobs.size()] =
+              p.pivot < 0 ? probe_for_contact(scene_, st.pose, st.contacts, p.vector,
+                                              probe_counters[j - jobs.size()])
+                          : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot, p.vector,
+                                              probe_counters[j - jobs.size()]);
+        }
       }
     };
-    const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
+    const int threads =
+        std::max(1, std::min<int>(options_.threads, jobs.size() + probes.size()));
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
     worker();
@@ -177,12 +260,20 @@ void Builder::grow(int seed_id) {
         c.to = to;
         if (to >= 0) add_link(c.from, to, c.motion);
       }
+      for (Discovery& d : r.discovered)
+        if (adds_one_contact(graph_.states[c.from].cf, d.cf))
+          discoveries_.push_back({c.from, std::move(d)});
       graph_.candidates.push_back(c);
       if (listener_) {
         listener_->on_candidate(graph_, graph_.candidates.back());
         listener_->on_progress(graph_, level, static_cast<int>(j + 1),
                                static_cast<int>(jobs.size()));
       }
+    }
+    for (size_t k = 0; k < probes.size(); ++k) {
+      counters_.merge(probe_counters[k]);
+      if (probed[k] && adds_one_contact(graph_.states[probes[k].state].cf, probed[k]->cf))
+        discoveries_.push_back({probes[k].state, std::move(*probed[k])});
     }
     frontier = std::move(next_frontier);
     ++level;
@@ -215,6 +306,23 @@ StateGraph Builder::run() {
     }
     grow(add_state(sc.cf, sc.pose, sc.contacts, true, 0));
   }
+  // Local maxima the seeds missed: a motion that met a new contact has reached a state of
+  // higher cardinality from below (its GN direction); each such state not yet in the graph
+  // seeds an LN graph of its own, linked to the state it was met from. Repeats until none is
+  // new, so every local maximum connected to the seeds by neighbouring transitions is found.
+  for (size_t k = 0; k < discoveries_.size() && !cancelled(); ++k) {
+    const auto [from, d] = discoveries_[k];
+    if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
+    int id = find_state(d.cf, d.pose);
+    if (id < 0) {
+      id = add_state(d.cf, d.pose, d.contacts, true, 0);
+      grow(id);
+    }
+    // The met state is `from` plus one contact: removing it (the reverse of the motion that
+    // met it) leads back down to `from`, an LN transition.
+    add_link(id, from, "separation (reverse of a motion from state " + std::to_string(from) + ")");
+  }
+
   graph_.stats.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   graph_.stats.collision_queries = counters_.detections;

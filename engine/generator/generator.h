@@ -19,6 +19,9 @@ struct GeneratorOptions {
   // drift of the kept contacts and penetration on the exact surfaces); costs one more contact
   // detection per step. Used by `pcsg sweep`.
   bool measure_discretisation = false;
+  // Probe upward from every state (push A toward the elements of B it does not touch) to find
+  // states of higher cardinality that the seeds' LN graphs do not reach (other local maxima).
+  bool probe_upward = true;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
 };

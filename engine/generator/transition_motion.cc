@@ -19,6 +19,10 @@ struct Track {
   Phase phase = Phase::Drive;
   int settle_left = 0;
   ElementId left;  // after an event: the element the contact left on the changing side
+  // Drive progress: the best distance to the goal so far (a length, or an angle times A's
+  // size for rotations) and the steps since it last improved.
+  double best_to_goal = std::numeric_limits<double>::infinity();
+  int stalled = 0;
 };
 
 // After an event, this many steps carry the changed contact into the interior of its new
@@ -34,6 +38,10 @@ constexpr int kMaxHalvings = 6;
 constexpr double kMaxTravelSizes = 12.0;
 // A detected contact is matched to a tracked one of the same pair within this many steps.
 constexpr double kMatchSteps = 3.0;
+// A changing contact whose distance to its goal has not shrunk by kMinProgress steps within
+// kMaxStalledSteps steps is not going to arrive this way (a drive circling or blocked).
+constexpr double kMinProgress = 0.01;
+constexpr int kMaxStalledSteps = 20;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
@@ -45,6 +53,7 @@ std::string fmt_point(const Eigen::Vector3d& p) {
 
 struct Observation {
   enum Kind { Same, Event, Missing, Collision, KeptChanged } kind = Same;
+  bool new_contact = false;  // a Collision that is a new touching contact, not penetration
   int track = -1;            // for Event / KeptChanged
   PointContact detected;     // the contact that differs
   std::string what;          // for Collision / KeptChanged
@@ -64,10 +73,17 @@ class Motion {
   }
 
   MotionOutcome run();
+  const Pose& pose() const { return X_; }
+  const PointContact& contact(int i) const { return tracks_[i].c; }
+  double size() const { return size_; }
   // CF-compliant travel toward `to` keeping every tracked contact (all Keep). With
   // `by_contacts` the drive moves each contact's points on A and on B toward the target's
   // (sliding and rolling over the elements); otherwise it moves the pose straight toward it.
   bool travel_to(const Pose& to, bool by_contacts);
+  // Pushes A with the drive twist `drive` (recomputed every step) until a new contact is met;
+  // `progress` must keep decreasing (to zero at the end of the push).
+  std::optional<Discovery> probe(const std::function<Twist(const TwistFrame&)>& drive,
+                                 const std::function<double()>& progress);
 
  private:
   TwistFrame frame_at(const Pose& X) const { return {X.apply(scene_.A.bbox.center()), size_}; }
@@ -92,6 +108,12 @@ class Motion {
     return o;
   }
   std::string name() const;
+  // The exact state of the contacts met at X_ (a new contact appeared), when it is one.
+  std::optional<Discovery> discover(const std::vector<PointContact>& contacts) const;
+  // How far a changing contact still is from its goal: the distance of its point to the goal
+  // element when approaching one, A's size times the angle between the contact normal and the
+  // goal's when leaving an edge or vertex by rotation.
+  double distance_to_goal(const Track& t) const;
   // Drift of the kept contacts and penetration at the midpoint of the step X -> Y, where the
   // motion is not re-projected: the discretisation error of the step grid.
   void measure_midpoint(const Pose& X, const Pose& Y);
@@ -130,6 +152,37 @@ std::string Motion::name() const {
     n += buf;
   }
   return n;
+}
+
+std::optional<Discovery> Motion::discover(const std::vector<PointContact>& contacts) const {
+  Discovery d;
+  d.cf = ContactFormation::of(contacts);
+  const ProjectionResult proj = project_onto_cf(scene_, X_, d.cf);
+  if (!proj.ok) return std::nullopt;
+  ++counters_.detections;
+  const ContactReport rep = detect_contacts(scene_, proj.pose);
+  if (rep.penetrating() || !(ContactFormation::of(rep.contacts) == d.cf)) return std::nullopt;
+  d.pose = proj.pose;
+  d.contacts = rep.contacts;
+  return d;
+}
+
+double Motion::distance_to_goal(const Track& t) const {
+  const bool on_a = t.plan.changes_a;
+  const Solid& S = on_a ? scene_.A : scene_.B;
+  const ElementId current = on_a ? t.c.a : t.c.b;
+  const ElementId goal = on_a ? t.plan.new_a : t.plan.new_b;
+  const Eigen::Vector3d x = on_a ? t.c.p_A : t.c.p_B;
+  if (element_dimension(goal) < element_dimension(current)) {
+    if (goal.kind == ElementKind::Vertex) return (S.vertices[goal.index].point - x).norm();
+    double best = std::numeric_limits<double>::infinity();
+    for (const CurveSample& cs : S.edges[goal.index].samples)
+      best = std::min(best, (cs.point - x).norm());
+    return best;
+  }
+  const Eigen::Vector3d n = on_a ? normal_in_A(X_, t.c) : Eigen::Vector3d(t.c.normal_B);
+  const double cosine = std::clamp(n.dot(cone_middle(S, goal, x)), -1.0, 1.0);
+  return size_ * std::acos(cosine);
 }
 
 void Motion::measure_midpoint(const Pose& X, const Pose& Y) {
@@ -249,6 +302,7 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) co
         return obs;
       }
     obs.kind = Observation::Collision;
+    obs.new_contact = true;
     obs.detected = d;
     obs.what = "collision: new contact " + element_pair_name(scene_, d.a, d.b) + " (" +
                ptc_type_name(d.type) + ") at " + fmt_point(d.point_B);
@@ -458,7 +512,9 @@ MotionOutcome Motion::run() {
       if (obs.kind != Observation::Event) {
         X_ = Y_hi;
         emit("collision", obs.contacts, &obs);
-        return fail(obs.what + " at step " + std::to_string(step_));
+        MotionOutcome o = fail(obs.what + " at step " + std::to_string(step_));
+        if (obs.new_contact) o.discovered = discover(obs.contacts);
+        return o;
       }
       // The changing contact now lies on its new elements: follow that pair from here on.
       X_ = Y_hi;
@@ -478,6 +534,18 @@ MotionOutcome Motion::run() {
     ++step_;
     ++counters_.steps;
     for (Track& t : tracks_) {
+      if (t.plan.action == ContactAction::Change && t.phase == Phase::Drive) {
+        const double d = distance_to_goal(t);
+        if (d < t.best_to_goal - kMinProgress * h_) {
+          t.best_to_goal = d;
+          t.stalled = 0;
+        } else if (++t.stalled > kMaxStalledSteps) {
+          return fail("contact " + element_pair_name(scene_, t.c.a, t.c.b) +
+                      " makes no progress toward " +
+                      element_pair_name(scene_, t.plan.new_a, t.plan.new_b) + " (step " +
+                      std::to_string(step_) + ")");
+        }
+      }
       if (t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
           --t.settle_left <= 0)
         t.phase = Phase::Done;
@@ -644,7 +712,116 @@ bool Motion::travel_to(const Pose& to, bool by_contacts) {
   return false;
 }
 
+std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFrame&)>& drive,
+                                      const std::function<double()>& progress) {
+  double best = std::numeric_limits<double>::infinity();
+  int stalled = 0;
+  constexpr int kMaxStalled = 8;  // as for connectivity: a blocked push
+  while (step_ < max_steps_) {
+    const double dist = progress();
+    if (dist <= 0) return std::nullopt;
+    if (dist < best - 1e-3 * h_) {
+      best = dist;
+      stalled = 0;
+    } else if (++stalled > kMaxStalled) {
+      return std::nullopt;
+    }
+    const TwistFrame F = frame_at(X_);
+    DriveSystem sys;
+    for (const Track& t : tracks_) sys.add_hard(F.from_origin_jacobian(t.c.jacobian));
+    const Twist want = drive(F);
+    sys.add_drive(Eigen::MatrixXd::Identity(6, 6), want / TwistFrame::displacement(want), 1.0);
+    auto s = sys.solve();
+    if (!s) return std::nullopt;
+    *s *= h_ / TwistFrame::displacement(*s);
+    std::vector<Track> moved = tracks_;
+    auto Y = correct(F.apply(X_, *s), moved);
+    if (!Y) return std::nullopt;
+    Observation obs = classify(*Y, moved);
+    if (obs.kind == Observation::Same) {
+      X_ = *Y;
+      tracks_ = moved;
+      ++step_;
+      ++counters_.steps;
+      continue;
+    }
+    if (obs.kind != Observation::Collision) return std::nullopt;
+    // Locate the first touch of the new contact between X_ and Y.
+    double lo = 0, hi = 1;
+    Pose Y_hi = *Y;
+    for (int k = 0; k < kBisections; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      std::vector<Track> tm = tracks_;
+      auto Ym = correct(F.apply(X_, *s * mid), tm);
+      if (!Ym) {
+        hi = mid;
+        continue;
+      }
+      Observation om = classify(*Ym, tm);
+      if (om.kind == Observation::Same) {
+        lo = mid;
+      } else {
+        hi = mid;
+        Y_hi = *Ym;
+        obs = om;
+      }
+    }
+    if (!obs.new_contact) return std::nullopt;
+    X_ = Y_hi;
+    return discover(obs.contacts);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<Discovery> probe_for_contact(const SceneGeometry& scene, const Pose& start,
+                                           const std::vector<PointContact>& contacts,
+                                           const Eigen::Vector3d& goal_B,
+                                           MotionCounters& counters) {
+  std::vector<Track> tracks;
+  for (const PointContact& c : contacts)
+    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{},
+                           std::numeric_limits<double>::infinity(), 0});
+  const ContactFormation cf = ContactFormation::of(contacts);
+  Motion m(scene, start, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
+  const Eigen::Vector3d centre_A = scene.A.bbox.center();
+  // Translate A's centre toward the goal.
+  return m.probe(
+      [&](const TwistFrame& F) {
+        Twist t = Twist::Zero();
+        t.head<3>() = goal_B - F.origin_B;
+        return t;
+      },
+      [&] { return (goal_B - m.pose().apply(centre_A)).norm(); });
+}
+
+std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pose& start,
+                                           const std::vector<PointContact>& contacts, int pivot,
+                                           const Eigen::Vector3d& axis_B,
+                                           MotionCounters& counters) {
+  std::vector<Track> tracks;
+  for (const PointContact& c : contacts)
+    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{},
+                           std::numeric_limits<double>::infinity(), 0});
+  const ContactFormation cf = ContactFormation::of(contacts);
+  Motion m(scene, start, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
+  const Eigen::Vector3d axis = axis_B.normalized();
+  // Turn about the pivot contact's current point; progress is the turn still to go, as a
+  // length at A's size (at most half a turn).
+  const Eigen::Quaterniond q0 = start.quaternion;
+  return m.probe(
+      [&](const TwistFrame& F) {
+        Twist t;
+        t.head<3>() = axis.cross(F.origin_B - m.contact(pivot).point_B);
+        t.tail<3>() = axis * F.length;
+        return t;
+      },
+      [&] {
+        const double turned = Eigen::AngleAxisd(m.pose().quaternion * q0.conjugate()).angle();
+        return m.size() * (M_PI - turned);
+      });
+}
 
 bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
                          const ContactFormation& cf, MotionCounters& counters) {
@@ -653,7 +830,7 @@ bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pos
   if (!(ContactFormation::of(rep.contacts) == cf)) return false;
   std::vector<Track> tracks;
   for (const PointContact& c : rep.contacts)
-    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}});
+    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}, std::numeric_limits<double>::infinity(), 0});
   // First straight toward the target pose, then, if that is blocked, by sliding and rolling
   // the contact points toward the target's.
   for (bool by_contacts : {false, true}) {
@@ -676,7 +853,7 @@ MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& star
                                     const ContactFormation& target, const MotionVariant& variant,
                                     MotionCounters& counters, const MotionObserver& observer) {
   std::vector<Track> tracks;
-  for (size_t i = 0; i < contacts.size(); ++i) tracks.push_back(Track{contacts[i], plan[i], Phase::Drive, 0, ElementId{}});
+  for (size_t i = 0; i < contacts.size(); ++i) tracks.push_back(Track{contacts[i], plan[i], Phase::Drive, 0, ElementId{}, std::numeric_limits<double>::infinity(), 0});
   Motion m(scene, start, std::move(tracks), target, variant, counters, observer);
   return m.run();
 }

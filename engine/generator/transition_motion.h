@@ -7,6 +7,7 @@
 // the first infeasibility, saying why.
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,17 @@ struct MotionFrame {
 };
 using MotionObserver = std::function<void(const MotionFrame&)>;
 
+// A configuration of a higher-cardinality CF met on the way: a motion that ends because a new
+// contact appears (touching, not penetrating) has reached a neighbouring state from below
+// (its GN direction). Its witness is exact (projected onto the CF and re-detected).
+struct Discovery {
+  ContactFormation cf;
+  Pose pose;
+  std::vector<PointContact> contacts;
+};
+
 struct MotionOutcome {
+  std::optional<Discovery> discovered;
   bool feasible = false;
   Pose end;                           // the witness of the target CF when feasible
   std::vector<PointContact> contacts; // exact contacts at `end`
@@ -74,6 +85,21 @@ MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& star
                                     const ContactFormation& target, const MotionVariant& variant,
                                     MotionCounters& counters,
                                     const MotionObserver& observer = nullptr);
+
+// An upward probe: from `start`, keeping every contact, A's centre is pushed toward
+// `goal_B`; the first new contact met gives a state of higher cardinality (nullopt when the
+// push is blocked, a kept contact changes, or A slides off).
+std::optional<Discovery> probe_for_contact(const SceneGeometry& scene, const Pose& start,
+                                           const std::vector<PointContact>& contacts,
+                                           const Eigen::Vector3d& goal_B,
+                                           MotionCounters& counters);
+// A tipping probe: from `start`, keeping every contact, A turns about the axis `axis_B`
+// through the point of contact `pivot` (an index into `contacts`), by at most a half turn; the
+// first new contact met gives a state of higher cardinality.
+std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pose& start,
+                                           const std::vector<PointContact>& contacts, int pivot,
+                                           const Eigen::Vector3d& axis_B,
+                                           MotionCounters& counters);
 
 // A CF-compliant motion from `from` toward `to` keeping every contact of `cf`: true when it
 // arrives, i.e. both witnesses lie in one CF-connected region (paper Section II-C).

@@ -41,8 +41,9 @@ void expect_witnesses_valid(const Generated& g) {
   for (const Link& l : g.graph.links) {
     ASSERT_GE(l.from, 0);
     ASSERT_LT(l.to, static_cast<int>(g.graph.states.size()));
-    if (l.kind == LinkKind::LN)
+    if (l.kind == LinkKind::LN) {
       EXPECT_LE(g.graph.states[l.to].cf.cardinality(), g.graph.states[l.from].cf.cardinality());
+    }
   }
 }
 

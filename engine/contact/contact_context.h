@@ -1,0 +1,68 @@
+#pragma once
+// The collision models of a scene, built once and shared read-only by every detection query
+// (and any number of threads): one FCL BVHModel<OBBRSSd> per solid (TOOLCHAIN: the one BV type
+// that FCL 0.7 does not refit per query), over the solid's mesh inflated outward. Meshes only
+// propose where contacts may be; the exact surfaces decide (paper Section IV: "our approach
+// generate[s] exact point contacts ... without mesh-based approximation").
+//
+// Inflation: every mesh vertex moves out by delta = chordal error + band / 2 along the miter
+// of the normals of the surfaces it lies on (so edges and vertices are covered too). A mesh is
+// within its chordal error of the exact surface, so the inflated shells of A and B overlap
+// wherever the exact gap is below the band, and each overlap region of the shells surrounds
+// one or more local minima of the distance.
+#include <Eigen/Core>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "engine/core/pose.h"
+#include "engine/geometry/scene_geometry.h"
+
+namespace pcsg {
+
+// What detection needs to know about one solid's mesh triangles.
+struct MeshIndex {
+  std::vector<Eigen::Vector3d> centroids;  // per triangle, in the solid's frame
+  // Per triangle, the elements whose contacts it may witness: its face, and the edges and
+  // vertices of that face within reach of the triangle (CSR: element_offsets has T + 1 rows).
+  std::vector<int> element_offsets;
+  std::vector<ElementId> elements;
+  // Per triangle, the triangles sharing a vertex with it (CSR), for grouping overlaps.
+  std::vector<int> neighbor_offsets;
+  std::vector<int> neighbors;
+  int triangle_count() const { return static_cast<int>(centroids.size()); }
+};
+
+class ContactContext {
+ public:
+  // `scene` must outlive the context. `band` (a length, > 0) is the gap up to which local
+  // minima are guaranteed to be found; 0 takes scene.tol.candidate_band.
+  explicit ContactContext(const SceneGeometry& scene, double band = 0);
+  ~ContactContext();
+  ContactContext(const ContactContext&) = delete;
+  ContactContext& operator=(const ContactContext&) = delete;
+
+  const SceneGeometry& scene() const { return *scene_; }
+  double guaranteed_band() const { return band_; }
+  const MeshIndex& index_A() const { return index_A_; }
+  const MeshIndex& index_B() const { return index_B_; }
+
+  // The (A triangle, B triangle) pairs whose inflated triangles intersect at the pose, at most
+  // `max_pairs` of them; returns false when that cap cut the list short.
+  bool overlapping_triangles(const Pose& X_BA, std::vector<std::pair<int, int>>& pairs,
+                             int max_pairs) const;
+
+ private:
+  struct Models;
+  const SceneGeometry* scene_;
+  double band_ = 0;
+  MeshIndex index_A_, index_B_;
+  std::unique_ptr<Models> models_;
+};
+
+// A context for `scene` from a small process-wide cache keyed by the scene's address and
+// checked against a fingerprint of its contents (sizes, polynomials, sampled mesh vertices),
+// so that detect_contacts(scene, ...) does not rebuild the BVHs on every call. Thread-safe.
+std::shared_ptr<const ContactContext> cached_contact_context(const SceneGeometry& scene);
+
+}  // namespace pcsg

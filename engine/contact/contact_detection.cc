@@ -1,0 +1,270 @@
+// detect_contacts: candidates from the inflated meshes' overlaps, exact local minima from the
+// pair solves, classification by the elements that hold the points (paper Section II-B).
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <tuple>
+
+#include "engine/contact/contact_classification.h"
+#include "engine/contact/contact_context.h"
+
+namespace pcsg {
+namespace {
+
+// Triangle pairs read from one FCL query: a contact's neighbourhood holds tens; a deep
+// penetration may hold thousands, and then any of them proves it.
+constexpr int kMaxTrianglePairs = 100000;
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) {
+    for (int i = 0; i < n; ++i) parent[i] = i;
+  }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+bool adjacent_or_equal(const MeshIndex& idx, int t, int u) {
+  if (t == u) return true;
+  const auto b = idx.neighbors.begin() + idx.neighbor_offsets[t];
+  const auto e = idx.neighbors.begin() + idx.neighbor_offsets[t + 1];
+  return std::binary_search(b, e, u);
+}
+
+// Groups the overlapping triangle pairs into connected regions: two pairs are connected when
+// their A triangles and their B triangles are equal or share a vertex. Splitting one region
+// only costs a repeated solve; merging two would lose a minimum, so adjacency is strict.
+std::vector<int> group_pairs(const ContactContext& ctx, std::vector<std::pair<int, int>>& pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  const int n = static_cast<int>(pairs.size());
+  UnionFind uf(n);
+  const MeshIndex& iA = ctx.index_A();
+  const MeshIndex& iB = ctx.index_B();
+  for (int i = 0; i < n; ++i) {
+    const auto [tA, tB] = pairs[i];
+    auto visit = [&](int nA) {
+      auto lo = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(nA, -1));
+      for (auto it = lo; it != pairs.end() && it->first == nA; ++it)
+        if (adjacent_or_equal(iB, tB, it->second)) uf.unite(i, static_cast<int>(it - pairs.begin()));
+    };
+    visit(tA);
+    for (int k = iA.neighbor_offsets[tA]; k < iA.neighbor_offsets[tA + 1]; ++k)
+      visit(iA.neighbors[k]);
+  }
+  std::vector<int> group(n);
+  for (int i = 0; i < n; ++i) group[i] = uf.find(i);
+  return group;
+}
+
+// A starting point on an element near a triangle's centroid.
+Eigen::Vector3d start_on(const Solid& solid, ElementId id, const Eigen::Vector3d& centroid) {
+  if (id.kind == ElementKind::Vertex) return solid.vertices[id.index].point;
+  if (id.kind == ElementKind::Edge) {
+    const auto& samples = solid.edges[id.index].samples;
+    Eigen::Vector3d best = centroid;
+    double bd = INFINITY;
+    for (const CurveSample& s : samples)
+      if ((s.point - centroid).squaredNorm() < bd) {
+        bd = (s.point - centroid).squaredNorm();
+        best = s.point;
+      }
+    return best;
+  }
+  return centroid;
+}
+
+struct Candidate {
+  ElementId a, b;
+  int pair = -1;  // index of the closest triangle pair of the region witnessing it
+  double distance = INFINITY;
+};
+
+bool same_contact(const PointContact& x, const PointContact& y, double distinct) {
+  return x.a == y.a && x.b == y.b && x.type == y.type &&
+         (x.point_B - y.point_B).norm() <= distinct;
+}
+
+// Canonical order: by pair and type, then by place (never by gap, whose last bits are
+// round-off when two contacts are symmetric).
+auto order_key(const PointContact& c) {
+  return std::make_tuple(c.a, c.b, static_cast<int>(c.type), c.point_B.x(), c.point_B.y(),
+                         c.point_B.z());
+}
+
+// How deep p lies inside `solid` (first order: -max_i g_i / |grad g_i|), when deeper than
+// `depth`; nullopt otherwise. Exits at the first inequality that p does not satisfy by depth,
+// so points outside (most of them) cost one or two evaluations.
+std::optional<double> depth_inside(const Solid& solid, const Eigen::Vector3d& p, double depth) {
+  double worst = -INFINITY;
+  for (const Polynomial& g : solid.surfaces) {
+    double v;
+    Eigen::Vector3d grad;
+    g.evaluate(p, &v, nullptr, nullptr);
+    if (v >= 0) return std::nullopt;
+    g.evaluate(p, nullptr, &grad, nullptr);
+    const double d = v / grad.norm();
+    if (d >= -depth) return std::nullopt;
+    worst = std::max(worst, d);
+  }
+  return -worst;
+}
+
+// Mesh vertices (exact surface points) of one solid strictly inside the other prove a
+// penetration even where no pair solve found its deepest point.
+void vertex_evidence(const SolidMesh& mesh, const std::vector<int>& triangles,
+                     const Solid& other, const Pose& to_other, double depth,
+                     std::optional<std::pair<Eigen::Vector3d, double>>& deepest) {
+  for (int t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = to_other.apply(mesh.positions[mesh.triangles[t][k]]);
+      const auto d = depth_inside(other, p, depth);
+      if (d && (!deepest || *d > deepest->second)) deepest = std::make_pair(p, *d);
+    }
+}
+
+std::vector<int> unique_sorted(std::vector<int> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+}  // namespace
+
+ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
+                              const DetectOptions& options) {
+  const SceneGeometry& scene = ctx.scene();
+  const Tolerances& tol = scene.tol;
+  if (options.near_margin > ctx.guaranteed_band())
+    throw std::invalid_argument("detect_contacts: near_margin exceeds the context's band");
+  ContactReport report;
+  std::vector<std::pair<int, int>> pairs;
+  ctx.overlapping_triangles(X_BA, pairs, kMaxTrianglePairs);
+  const std::vector<int> group = group_pairs(ctx, pairs);
+  const MeshIndex& iA = ctx.index_A();
+  const MeshIndex& iB = ctx.index_B();
+
+  // Candidates: per region, each element pair witnessed there, from its closest triangles.
+  std::vector<std::vector<Candidate>> regions;
+  std::vector<int> region_of(pairs.size(), -1);
+  std::vector<int> region_index(pairs.size(), -1);
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const int root = group[i];
+    if (region_index[root] < 0) {
+      region_index[root] = static_cast<int>(regions.size());
+      regions.emplace_back();
+    }
+    region_of[i] = region_index[root];
+    auto& cands = regions[region_of[i]];
+    const auto [tA, tB] = pairs[i];
+    const double d = (X_BA.apply(iA.centroids[tA]) - iB.centroids[tB]).norm();
+    for (int ka = iA.element_offsets[tA]; ka < iA.element_offsets[tA + 1]; ++ka)
+      for (int kb = iB.element_offsets[tB]; kb < iB.element_offsets[tB + 1]; ++kb) {
+        const ElementId a = iA.elements[ka], b = iB.elements[kb];
+        auto it = std::find_if(cands.begin(), cands.end(),
+                               [&](const Candidate& c) { return c.a == a && c.b == b; });
+        if (it == cands.end()) it = cands.insert(cands.end(), Candidate{a, b});
+        if (d < it->distance) {
+          it->distance = d;
+          it->pair = static_cast<int>(i);
+        }
+      }
+  }
+
+  // Exact solves, de-duplicated: several candidates of a region reach the same contact.
+  std::vector<PointContact> found_min;
+  std::vector<bool> region_penetrates(regions.size(), false);
+  for (size_t r = 0; r < regions.size(); ++r)
+    for (const Candidate& c : regions[r]) {
+      const auto [tA, tB] = pairs[c.pair];
+      const ResolvedContact res =
+          resolve_contact(scene, X_BA, c.a, c.b, start_on(scene.A, c.a, iA.centroids[tA]),
+                          start_on(scene.B, c.b, iB.centroids[tB]));
+      if (!res.found) {
+        if (res.diverged) ++report.failed_solves;
+        continue;
+      }
+      const PointContact& pc = res.contact;
+      // A negative gap is a penetration when the points are inside the other solid (a
+      // stationary point of the signed distance can also pair far-apart sides).
+      if (pc.gap < -tol.penetration && strictly_inside(scene.B, X_BA.apply(pc.p_A), 0) &&
+          strictly_inside(scene.A, X_BA.apply_inverse(pc.p_B), 0)) {
+        region_penetrates[r] = true;
+        bool dup = false;
+        for (const Penetration& p : report.penetrations)
+          dup = dup || (p.a == pc.a && p.b == pc.b &&
+                        (p.point_B - pc.point_B).norm() <= tol.distinct_points);
+        if (!dup) report.penetrations.push_back({pc.a, pc.b, pc.point_B, -pc.gap});
+        continue;
+      }
+      if (!res.minimum) continue;
+      bool dup = false;
+      for (const PointContact& f : found_min) dup = dup || same_contact(f, pc, tol.distinct_points);
+      if (!dup) found_min.push_back(pc);
+    }
+
+  // Penetrations no solve located: surface points of one solid inside the other.
+  const Pose X_AB{X_BA.apply_inverse(Eigen::Vector3d::Zero()), X_BA.quaternion.conjugate()};
+  std::vector<std::optional<std::pair<Eigen::Vector3d, double>>> deepest_A(regions.size()),
+      deepest_B(regions.size());
+  std::vector<std::vector<int>> tris_A(regions.size()), tris_B(regions.size());
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    tris_A[region_of[i]].push_back(pairs[i].first);
+    tris_B[region_of[i]].push_back(pairs[i].second);
+  }
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (region_penetrates[r]) continue;
+    vertex_evidence(scene.mesh_A, unique_sorted(std::move(tris_A[r])), scene.B, X_BA,
+                    tol.penetration, deepest_A[r]);
+    vertex_evidence(scene.mesh_B, unique_sorted(std::move(tris_B[r])), scene.A, X_AB,
+                    tol.penetration, deepest_B[r]);
+  }
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (region_penetrates[r] || (!deepest_A[r] && !deepest_B[r])) continue;
+    const auto [tA, tB] = pairs[regions[r].front().pair];
+    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face[tA]};
+    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face[tB]};
+    const bool use_A = deepest_A[r] && (!deepest_B[r] || deepest_A[r]->second >= deepest_B[r]->second);
+    const Eigen::Vector3d point = use_A ? deepest_A[r]->first : X_BA.apply(deepest_B[r]->first);
+    report.penetrations.push_back({a, b, point, use_A ? deepest_A[r]->second : deepest_B[r]->second});
+  }
+  // One solid entirely inside the other: no surfaces cross, so no triangles overlap.
+  if (pairs.empty()) {
+    const Eigen::Vector3d a0 = X_BA.apply(scene.mesh_A.positions.front());
+    const Eigen::Vector3d b0 = scene.mesh_B.positions.front();
+    const double depth_A = depth_inside(scene.B, a0, tol.penetration).value_or(0);
+    const double depth_B = depth_inside(scene.A, X_AB.apply(b0), tol.penetration).value_or(0);
+    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face.front()};
+    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face.front()};
+    if (depth_A > tol.penetration)
+      report.penetrations.push_back({a, b, a0, depth_A});
+    else if (depth_B > tol.penetration)
+      report.penetrations.push_back({a, b, b0, depth_B});
+  }
+
+  for (PointContact& c : found_min) {
+    if (std::abs(c.gap) <= tol.contact_gap)
+      report.contacts.push_back(std::move(c));
+    else if (c.gap > tol.contact_gap && c.gap <= options.near_margin)
+      report.near.push_back(std::move(c));
+  }
+  auto by_key = [](const PointContact& x, const PointContact& y) {
+    return order_key(x) < order_key(y);
+  };
+  std::sort(report.contacts.begin(), report.contacts.end(), by_key);
+  std::sort(report.near.begin(), report.near.end(), by_key);
+  return report;
+}
+
+ContactReport detect_contacts(const SceneGeometry& scene, const Pose& X_BA,
+                              const DetectOptions& options) {
+  return detect_contacts(*cached_contact_context(scene), X_BA, options);
+}
+
+}  // namespace pcsg

@@ -1,0 +1,130 @@
+#include "engine/contact/pair_solver.h"
+
+#include <Eigen/Dense>
+
+#include "engine/contact/pair_touch.h"
+
+namespace pcsg {
+namespace {
+
+NewtonOptions newton_options(const Tolerances& tol) {
+  NewtonOptions o;
+  o.length_scale = tol.length_scale;
+  o.residual = tol.solve_residual;
+  o.max_iterations = tol.solve_max_iterations;
+  return o;
+}
+
+// Row [e^T, (x x e)^T]: the rate of the separation along the fixed direction e when A moves
+// with the twist (v, w) about B's origin (A's point x moves with v + w x x).
+Eigen::Matrix<double, 1, 6> separation_row(const Eigen::Vector3d& e, const Eigen::Vector3d& x) {
+  Eigen::Matrix<double, 1, 6> row;
+  row << e.transpose(), x.cross(e).transpose();
+  return row;
+}
+
+}  // namespace
+
+PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
+                                ElementId b, PtcType type, const Eigen::Vector3d& start_A,
+                                const Eigen::Vector3d& start_B) {
+  const PairSetup setup = PairSetup::make(scene, X_BA, a, b);
+  const NewtonOptions options = newton_options(scene.tol);
+  PairSolution out;
+  PointContact& c = out.contact;
+  c.a = a;
+  c.b = b;
+  c.type = type;
+  if (type == PtcType::EETouch) {
+    const TouchSolution t = solve_touch(setup, start_A, start_B, options);
+    if (!t.converged) return out;
+    c.p_A = t.p_A;
+    c.p_B = t.p_B;
+    const Eigen::Vector3d D = setup.R * c.p_A + setup.t - c.p_B;
+    const Eigen::Vector3d t_b = edge_jet(scene.B, b.index, c.p_B).tangent;
+    c.normal_B = outward_bisector(scene.B, element_surfaces(scene.B, b), c.p_B, t_b);
+    c.gap = D.dot(c.normal_B) < 0 ? -D.norm() : D.norm();
+  } else {
+    const PairSystem system(setup, type);
+    SmallVector z = system.initial(start_A, start_B);
+    if (system.size() > 0) {
+      const NewtonResult r = solve_square_system(system, z, options);
+      out.iterations = r.iterations;
+      if (!r.converged) return out;
+    }
+    const PairPoints p = system.points(z);
+    c.p_A = p.p_A;
+    c.p_B = p.p_B;
+    c.gap = p.gap;
+    c.normal_B = p.normal_B;
+    out.k = p.k;
+  }
+  out.converged = true;
+  fill_contact_conditions(scene, X_BA, c);
+  return out;
+}
+
+void fill_contact_conditions(const SceneGeometry& scene, const Pose& X_BA, PointContact& c) {
+  const Eigen::Matrix3d R = X_BA.rotation();
+  const Eigen::Vector3d x_A = X_BA.apply(c.p_A);
+  const Eigen::Vector3d D = x_A - c.p_B;
+  c.point_B = 0.5 * (x_A + c.p_B);
+  c.tangent_a_B.setZero();
+  c.tangent_b_B.setZero();
+  CurveJet ja, jb;
+  if (c.a.kind == ElementKind::Edge) {
+    ja = edge_jet(scene.A, c.a.index, c.p_A);
+    c.tangent_a_B = R * ja.tangent;
+  }
+  if (c.b.kind == ElementKind::Edge) {
+    jb = edge_jet(scene.B, c.b.index, c.p_B);
+    c.tangent_b_B = jb.tangent;
+  }
+  const int rows = ptc_codimension(c.type);
+  c.residual.resize(rows);
+  c.jacobian.resize(rows, 6);
+  switch (c.type) {
+    case PtcType::FF: case PtcType::FE: case PtcType::EF: case PtcType::EECross:
+    case PtcType::FV: case PtcType::VF:
+      // Envelope theorem: the gap is stationary in the contact points, so its rate is the
+      // normal velocity of A's point.
+      c.residual[0] = c.gap;
+      c.jacobian.row(0) = separation_row(c.normal_B, x_A);
+      break;
+    case PtcType::VE: case PtcType::EV: {
+      // The foot moves along the contact line, so only the two normal separations count.
+      const Eigen::Vector3d line = c.type == PtcType::VE ? c.tangent_b_B : c.tangent_a_B;
+      const Eigen::Vector3d e2 = line.cross(c.normal_B).normalized();
+      c.residual << D.dot(c.normal_B), D.dot(e2);
+      c.jacobian.row(0) = separation_row(c.normal_B, x_A);
+      c.jacobian.row(1) = separation_row(e2, x_A);
+      break;
+    }
+    case PtcType::VV:
+      c.residual = D;
+      for (int i = 0; i < 3; ++i) c.jacobian.row(i) = separation_row(Eigen::Vector3d::Unit(i), x_A);
+      break;
+    case PtcType::EETouch: {
+      // Rows: the separation normal to the common tangent t (two), and the tangents'
+      // misalignment across their relative curvature k. Along k the misalignment is absorbed
+      // by sliding (the solve's free parameter); across it, m = t x k / |t x k|, it is not.
+      // Sliding moves the foot by du - dv = -t . (v + w x x), which changes the misalignment
+      // along m at the rate mu = m . kappa_b of B's curvature vector (m . kappa_a is the same).
+      const Eigen::Vector3d t = jb.tangent;
+      const Eigen::Vector3d e2 = t.cross(c.normal_B).normalized();
+      const double sigma = c.tangent_a_B.dot(t) < 0 ? -1 : 1;
+      const Eigen::Vector3d kappa_a = R * ja.curvature, kappa_b = jb.curvature;
+      Eigen::Vector3d k = kappa_a - kappa_b;
+      k -= t * t.dot(k);
+      const Eigen::Vector3d m = k.norm() > 0 ? Eigen::Vector3d(t.cross(k).normalized()) : e2;
+      const double mu = m.dot(kappa_b);
+      c.residual << D.dot(c.normal_B), D.dot(e2), (sigma * c.tangent_a_B - t).dot(m);
+      c.jacobian.row(0) = separation_row(c.normal_B, x_A);
+      c.jacobian.row(1) = separation_row(e2, x_A);
+      c.jacobian.row(2) << -mu * t.transpose(), (t.cross(m) - mu * x_A.cross(t)).transpose();
+      break;
+    }
+  }
+}
+
+}  // namespace pcsg
