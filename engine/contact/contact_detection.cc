@@ -135,33 +135,29 @@ std::vector<int> unique_sorted(std::vector<int> v) {
   return v;
 }
 
-}  // namespace
+// The overlap regions of the inflated meshes and, per region, each element pair witnessed
+// there with its closest triangle pair (the starting points of its solve).
+struct Regions {
+  std::vector<std::vector<Candidate>> candidates;  // per region
+  std::vector<int> region_of;                      // per triangle pair
+};
 
-ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
-                              const DetectOptions& options) {
-  const SceneGeometry& scene = ctx.scene();
-  const Tolerances& tol = scene.tol;
-  if (options.near_margin > ctx.guaranteed_band())
-    throw std::invalid_argument("detect_contacts: near_margin exceeds the context's band");
-  ContactReport report;
-  std::vector<std::pair<int, int>> pairs;
-  ctx.overlapping_triangles(X_BA, pairs, kMaxTrianglePairs);
+Regions collect_regions(const ContactContext& ctx, const Pose& X_BA,
+                        std::vector<std::pair<int, int>>& pairs) {
   const std::vector<int> group = group_pairs(ctx, pairs);
   const MeshIndex& iA = ctx.index_A();
   const MeshIndex& iB = ctx.index_B();
-
-  // Candidates: per region, each element pair witnessed there, from its closest triangles.
-  std::vector<std::vector<Candidate>> regions;
-  std::vector<int> region_of(pairs.size(), -1);
+  Regions out;
+  out.region_of.assign(pairs.size(), -1);
   std::vector<int> region_index(pairs.size(), -1);
   for (size_t i = 0; i < pairs.size(); ++i) {
     const int root = group[i];
     if (region_index[root] < 0) {
-      region_index[root] = static_cast<int>(regions.size());
-      regions.emplace_back();
+      region_index[root] = static_cast<int>(out.candidates.size());
+      out.candidates.emplace_back();
     }
-    region_of[i] = region_index[root];
-    auto& cands = regions[region_of[i]];
+    out.region_of[i] = region_index[root];
+    auto& cands = out.candidates[out.region_of[i]];
     const auto [tA, tB] = pairs[i];
     const double d = (X_BA.apply(iA.centroids[tA]) - iB.centroids[tB]).norm();
     for (int ka = iA.element_offsets[tA]; ka < iA.element_offsets[tA + 1]; ++ka)
@@ -176,16 +172,74 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
         }
       }
   }
+  return out;
+}
+
+// Penetrations that no solve located in a region (and one solid wholly inside the other):
+// surface points of one solid inside the other.
+void add_unsolved_penetrations(const SceneGeometry& scene, const Pose& X_BA,
+                               const std::vector<std::pair<int, int>>& pairs,
+                               const Regions& regions, const std::vector<bool>& solved,
+                               ContactReport& report) {
+  const double depth = scene.tol.penetration;
+  const Pose X_AB{X_BA.apply_inverse(Eigen::Vector3d::Zero()), X_BA.quaternion.conjugate()};
+  const size_t n = regions.candidates.size();
+  std::vector<std::vector<int>> tris_A(n), tris_B(n);
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    tris_A[regions.region_of[i]].push_back(pairs[i].first);
+    tris_B[regions.region_of[i]].push_back(pairs[i].second);
+  }
+  for (size_t r = 0; r < n; ++r) {
+    if (solved[r]) continue;
+    std::optional<std::pair<Eigen::Vector3d, double>> deep_A, deep_B;
+    vertex_evidence(scene.mesh_A, unique_sorted(std::move(tris_A[r])), scene.B, X_BA, depth,
+                    deep_A);
+    vertex_evidence(scene.mesh_B, unique_sorted(std::move(tris_B[r])), scene.A, X_AB, depth,
+                    deep_B);
+    if (!deep_A && !deep_B) continue;
+    const auto [tA, tB] = pairs[regions.candidates[r].front().pair];
+    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face[tA]};
+    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face[tB]};
+    if (deep_A && (!deep_B || deep_A->second >= deep_B->second))
+      report.penetrations.push_back({a, b, deep_A->first, deep_A->second});
+    else
+      report.penetrations.push_back({a, b, X_BA.apply(deep_B->first), deep_B->second});
+  }
+  // One solid entirely inside the other: no surfaces cross, so no triangles overlap.
+  if (pairs.empty()) {
+    const Eigen::Vector3d a0 = X_BA.apply(scene.mesh_A.positions.front());
+    const Eigen::Vector3d b0 = scene.mesh_B.positions.front();
+    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face.front()};
+    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face.front()};
+    if (const auto d = depth_inside(scene.B, a0, depth))
+      report.penetrations.push_back({a, b, a0, *d});
+    else if (const auto d2 = depth_inside(scene.A, X_AB.apply(b0), depth))
+      report.penetrations.push_back({a, b, b0, *d2});
+  }
+}
+
+}  // namespace
+
+ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
+                              const DetectOptions& options) {
+  const SceneGeometry& scene = ctx.scene();
+  const Tolerances& tol = scene.tol;
+  if (options.near_margin > ctx.guaranteed_band())
+    throw std::invalid_argument("detect_contacts: near_margin exceeds the context's band");
+  ContactReport report;
+  std::vector<std::pair<int, int>> pairs;
+  ctx.overlapping_triangles(X_BA, pairs, kMaxTrianglePairs);
+  const Regions regions = collect_regions(ctx, X_BA, pairs);
 
   // Exact solves, de-duplicated: several candidates of a region reach the same contact.
-  std::vector<PointContact> found_min;
-  std::vector<bool> region_penetrates(regions.size(), false);
-  for (size_t r = 0; r < regions.size(); ++r)
-    for (const Candidate& c : regions[r]) {
+  std::vector<PointContact> minima;
+  std::vector<bool> penetrates(regions.candidates.size(), false);
+  for (size_t r = 0; r < regions.candidates.size(); ++r)
+    for (const Candidate& c : regions.candidates[r]) {
       const auto [tA, tB] = pairs[c.pair];
-      const ResolvedContact res =
-          resolve_contact(scene, X_BA, c.a, c.b, start_on(scene.A, c.a, iA.centroids[tA]),
-                          start_on(scene.B, c.b, iB.centroids[tB]));
+      const ResolvedContact res = resolve_contact(
+          scene, X_BA, c.a, c.b, start_on(scene.A, c.a, ctx.index_A().centroids[tA]),
+          start_on(scene.B, c.b, ctx.index_B().centroids[tB]));
       if (!res.found) {
         if (res.diverged) ++report.failed_solves;
         continue;
@@ -195,7 +249,7 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
       // stationary point of the signed distance can also pair far-apart sides).
       if (pc.gap < -tol.penetration && strictly_inside(scene.B, X_BA.apply(pc.p_A), 0) &&
           strictly_inside(scene.A, X_BA.apply_inverse(pc.p_B), 0)) {
-        region_penetrates[r] = true;
+        penetrates[r] = true;
         bool dup = false;
         for (const Penetration& p : report.penetrations)
           dup = dup || (p.a == pc.a && p.b == pc.b &&
@@ -205,50 +259,12 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
       }
       if (!res.minimum) continue;
       bool dup = false;
-      for (const PointContact& f : found_min) dup = dup || same_contact(f, pc, tol.distinct_points);
-      if (!dup) found_min.push_back(pc);
+      for (const PointContact& f : minima) dup = dup || same_contact(f, pc, tol.distinct_points);
+      if (!dup) minima.push_back(pc);
     }
+  add_unsolved_penetrations(scene, X_BA, pairs, regions, penetrates, report);
 
-  // Penetrations no solve located: surface points of one solid inside the other.
-  const Pose X_AB{X_BA.apply_inverse(Eigen::Vector3d::Zero()), X_BA.quaternion.conjugate()};
-  std::vector<std::optional<std::pair<Eigen::Vector3d, double>>> deepest_A(regions.size()),
-      deepest_B(regions.size());
-  std::vector<std::vector<int>> tris_A(regions.size()), tris_B(regions.size());
-  for (size_t i = 0; i < pairs.size(); ++i) {
-    tris_A[region_of[i]].push_back(pairs[i].first);
-    tris_B[region_of[i]].push_back(pairs[i].second);
-  }
-  for (size_t r = 0; r < regions.size(); ++r) {
-    if (region_penetrates[r]) continue;
-    vertex_evidence(scene.mesh_A, unique_sorted(std::move(tris_A[r])), scene.B, X_BA,
-                    tol.penetration, deepest_A[r]);
-    vertex_evidence(scene.mesh_B, unique_sorted(std::move(tris_B[r])), scene.A, X_AB,
-                    tol.penetration, deepest_B[r]);
-  }
-  for (size_t r = 0; r < regions.size(); ++r) {
-    if (region_penetrates[r] || (!deepest_A[r] && !deepest_B[r])) continue;
-    const auto [tA, tB] = pairs[regions[r].front().pair];
-    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face[tA]};
-    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face[tB]};
-    const bool use_A = deepest_A[r] && (!deepest_B[r] || deepest_A[r]->second >= deepest_B[r]->second);
-    const Eigen::Vector3d point = use_A ? deepest_A[r]->first : X_BA.apply(deepest_B[r]->first);
-    report.penetrations.push_back({a, b, point, use_A ? deepest_A[r]->second : deepest_B[r]->second});
-  }
-  // One solid entirely inside the other: no surfaces cross, so no triangles overlap.
-  if (pairs.empty()) {
-    const Eigen::Vector3d a0 = X_BA.apply(scene.mesh_A.positions.front());
-    const Eigen::Vector3d b0 = scene.mesh_B.positions.front();
-    const double depth_A = depth_inside(scene.B, a0, tol.penetration).value_or(0);
-    const double depth_B = depth_inside(scene.A, X_AB.apply(b0), tol.penetration).value_or(0);
-    const ElementId a{ElementKind::Face, scene.mesh_A.triangle_face.front()};
-    const ElementId b{ElementKind::Face, scene.mesh_B.triangle_face.front()};
-    if (depth_A > tol.penetration)
-      report.penetrations.push_back({a, b, a0, depth_A});
-    else if (depth_B > tol.penetration)
-      report.penetrations.push_back({a, b, b0, depth_B});
-  }
-
-  for (PointContact& c : found_min) {
+  for (PointContact& c : minima) {
     if (std::abs(c.gap) <= tol.contact_gap)
       report.contacts.push_back(std::move(c));
     else if (c.gap > tol.contact_gap && c.gap <= options.near_margin)

@@ -4,19 +4,12 @@
 
 namespace pcsg {
 
-PtcType ptc_type_of(ElementKind a, ElementKind b) {
-  using K = ElementKind;
-  if (a == K::Face) return b == K::Face ? PtcType::FF : b == K::Edge ? PtcType::FE : PtcType::FV;
-  if (a == K::Edge) return b == K::Face ? PtcType::EF : b == K::Edge ? PtcType::EECross : PtcType::EV;
-  return b == K::Face ? PtcType::VF : b == K::Edge ? PtcType::VE : PtcType::VV;
-}
-
 std::vector<PtcCount> neighbouring_ptcs(const SceneGeometry& scene, const PointContact& c) {
   std::vector<PtcCount> out;
   for (const ElementId& nb : scene.B.adjacent(c.b))
-    out.push_back({c.a, nb, ptc_type_of(c.a.kind, nb.kind), 1});
+    out.push_back({c.a, nb, ptc_type_between(c.a.kind, nb.kind), 1});
   for (const ElementId& na : scene.A.adjacent(c.a))
-    out.push_back({na, c.b, ptc_type_of(na.kind, c.b.kind), 1});
+    out.push_back({na, c.b, ptc_type_between(na.kind, c.b.kind), 1});
   return out;
 }
 

@@ -27,9 +27,9 @@ struct Hypothesis {
   std::vector<std::vector<ContactPlan>> plan_options;
 };
 
-// The PtC type of a pair of elements. Edge-edge pairs give e-e-cross (e-e-touch is the
-// degenerate, collinear case and is decided from geometry, not hypothesised).
-PtcType ptc_type_of(ElementKind a, ElementKind b);
+// Hypotheses take the PtC type of a pair from its elements (ptc_type_between, contact.h):
+// edge-edge pairs give e-e-cross; e-e-touch is the degenerate, collinear case and is decided
+// from geometry, not hypothesised.
 
 // Neighbouring PtCs of a contact (paper Section II-D): the same A element with an element
 // adjacent to B's, or the same B element with an element adjacent to A's.
