@@ -1,7 +1,10 @@
 #include "engine/generator/seeds.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+
+#include <Eigen/Eigenvalues>
 
 #include "engine/core/error.h"
 #include "engine/generator/motion_drive.h"
@@ -138,6 +141,27 @@ std::optional<SeedCandidate> settle(const SceneGeometry& scene, Pose X, ContactR
   return out;
 }
 
+// A solid's principal frame (columns: axes of its mesh vertices' second moments about the
+// bounding-box centre, largest spread first, right-handed), so that the seed search moves with
+// the objects when the scene is moved or rotated (the graph must not depend on B's frame).
+Eigen::Matrix3d principal_frame(const SolidMesh& mesh, const Eigen::Vector3d& centre) {
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& p : mesh.positions) C += (p - centre) * (p - centre).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
+  Eigen::Matrix3d R;
+  // Eigen sorts eigenvalues increasingly: the largest spread first.
+  for (int k = 0; k < 3; ++k) R.col(k) = eig.eigenvectors().col(2 - k);
+  // Fix each axis' sign by the mesh's third moment along it (deterministic for a given
+  // shape), then make the frame right-handed.
+  for (int k = 0; k < 2; ++k) {
+    double m3 = 0;
+    for (const Eigen::Vector3d& p : mesh.positions) m3 += std::pow(R.col(k).dot(p - centre), 3);
+    if (m3 < 0) R.col(k) *= -1;
+  }
+  R.col(2) = R.col(0).cross(R.col(1));
+  return R;
+}
+
 }  // namespace
 
 std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
@@ -160,6 +184,9 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
       Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()))};
 
   const Eigen::Vector3d cB = scene.B.bbox.center();
+  const Eigen::Matrix3d R_B = principal_frame(scene.mesh_B, cB);
+  const Eigen::Matrix3d R_A = principal_frame(scene.mesh_A, scene.A.bbox.center());
+  for (Eigen::Vector3d& d : dirs) d = R_B * d;
   const double reach = scene.B.bbox.diagonal().norm() / 2 + scene.A.bbox.diagonal().norm() / 2;
   std::vector<SeedCandidate> out;
   for (const Eigen::Vector3d& d : dirs)
@@ -167,8 +194,9 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
       // A starts outside B along d and moves toward B's centre until it first touches.
       auto at = [&](double t) {
         Pose X;
-        X.quaternion = q;
-        X.position = cB + d * (reach * (1.0 - t)) - (q * scene.A.bbox.center());
+        // A's principal frame aligned with B's, then turned.
+        X.quaternion = Eigen::Quaterniond(R_B * q.toRotationMatrix() * R_A.transpose()).normalized();
+        X.position = cB + d * (reach * (1.0 - t)) - (X.quaternion * scene.A.bbox.center());
         return X;
       };
       ContactReport rep;

@@ -3,7 +3,6 @@
 // and invariance of the CFs under scaling and under moving B's frame.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdio>
 
 #include "engine/contact/contact_context.h"
@@ -113,36 +112,6 @@ TEST(ExampleScenes, CfsAreInvariantUnderScalingAndMovingB) {
     X.position = M.apply(poses[i].position);
     EXPECT_EQ(describe(moved, X), expected[i]) << "moved";
   }
-}
-
-TEST(ExampleScenes, TimingOnExample1) {
-  // Reported, not asserted: timings depend on the machine's load (the best of 5 batches).
-  const SceneGeometry& scene = example1();
-  ContactContext ctx(scene);
-  const Pose X = lying(resting_height());
-  const ContactFormation cf = ContactFormation::parse("{(fA-f1, 2)}", scene);
-  const Pose start = lying(resting_height() + 0.05);
-  using clock = std::chrono::steady_clock;
-  auto micros = [](clock::time_point a, clock::time_point b) {
-    return std::chrono::duration<double, std::micro>(b - a).count();
-  };
-  double detect = INFINITY, project = INFINITY, track = INFINITY;
-  const PointContact c = detect_contacts(ctx, X).contacts.at(0);
-  for (int batch = 0; batch < 5; ++batch) {
-    auto t0 = clock::now();
-    for (int i = 0; i < 40; ++i) detect_contacts(ctx, X);
-    auto t1 = clock::now();
-    for (int i = 0; i < 4; ++i) project_onto_cf(ctx, start, cf);
-    auto t2 = clock::now();
-    for (int i = 0; i < 400; ++i) solve_pair(scene, start, c.a, c.b, c.type, c.p_A, c.p_B);
-    auto t3 = clock::now();
-    detect = std::min(detect, micros(t0, t1) / 40);
-    project = std::min(project, micros(t1, t2) / 4);
-    track = std::min(track, micros(t2, t3) / 400);
-  }
-  std::printf("Example 1 (%zu + %zu triangles): detect_contacts %.0f us, project_onto_cf %.0f us, "
-              "solve_pair %.1f us\n",
-              scene.mesh_A.triangles.size(), scene.mesh_B.triangles.size(), detect, project, track);
 }
 
 }  // namespace

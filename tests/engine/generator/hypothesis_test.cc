@@ -26,7 +26,7 @@ TEST(Hypothesis, Example1SeedHasTheLocallyDefinedNeighbours) {
   const auto texts = cf_texts(hs, scene);
   // f1 is adjacent to e1 only (B has no vertices): keep/change/remove for each of the two.
   for (const char* expected :
-       {"{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-e1, 2)}", "{(fA-f1, 1), (fA-e1, 1)}"})
+       {"{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-e1, 2)}", "{(fA-e1, 1), (fA-f1, 1)}"})
     EXPECT_NE(std::find(texts.begin(), texts.end(), expected), texts.end())
         << expected << " missing from\n" << testing::join(texts);
   EXPECT_EQ(hs.size(), 4u) << testing::join(texts);
