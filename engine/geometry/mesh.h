@@ -19,7 +19,7 @@ struct SolidMesh {
   double chordal_error = 0;                // the bound it was built for
   // Exact outward unit normal of each triangle's face at each of its corners (3 per triangle,
   // corner k of triangle t at 3t + k): at vertices on an edge `normals` holds the mean of the
-
+  // meeting faces' normals, while each corner here keeps its own face's normal.
   std::vector<Eigen::Vector3d> corner_normals;
   // The Solid::edges index of the edge each vertex lies on (-1 inside a face or at a vertex),
   // and the Solid::vertices index of the vertex it is (-1 otherwise).
