@@ -45,6 +45,15 @@ constexpr int kMaxStalledSteps = 20;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
+// Tracks that keep every given contact (connectivity motions and upward probes).
+std::vector<Track> keep_all(const std::vector<PointContact>& contacts) {
+  std::vector<Track> tracks;
+  for (const PointContact& c : contacts)
+    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{},
+                           std::numeric_limits<double>::infinity(), 0});
+  return tracks;
+}
+
 std::string fmt_point(const Eigen::Vector3d& p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
@@ -779,10 +788,7 @@ std::optional<Discovery> probe_for_contact(const SceneGeometry& scene, const Pos
                                            const std::vector<PointContact>& contacts,
                                            const Eigen::Vector3d& goal_B,
                                            MotionCounters& counters) {
-  std::vector<Track> tracks;
-  for (const PointContact& c : contacts)
-    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{},
-                           std::numeric_limits<double>::infinity(), 0});
+  std::vector<Track> tracks = keep_all(contacts);
   const ContactFormation cf = ContactFormation::of(contacts);
   Motion m(scene, start, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
   const Eigen::Vector3d centre_A = scene.A.bbox.center();
@@ -800,10 +806,7 @@ std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pos
                                            const std::vector<PointContact>& contacts, int pivot,
                                            const Eigen::Vector3d& axis_B,
                                            MotionCounters& counters) {
-  std::vector<Track> tracks;
-  for (const PointContact& c : contacts)
-    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{},
-                           std::numeric_limits<double>::infinity(), 0});
+  std::vector<Track> tracks = keep_all(contacts);
   const ContactFormation cf = ContactFormation::of(contacts);
   Motion m(scene, start, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
   const Eigen::Vector3d axis = axis_B.normalized();
@@ -828,9 +831,7 @@ bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pos
   ++counters.detections;
   const ContactReport rep = detect_contacts(scene, from);
   if (!(ContactFormation::of(rep.contacts) == cf)) return false;
-  std::vector<Track> tracks;
-  for (const PointContact& c : rep.contacts)
-    tracks.push_back(Track{c, ContactPlan{}, Phase::Drive, 0, ElementId{}, std::numeric_limits<double>::infinity(), 0});
+  const std::vector<Track> tracks = keep_all(rep.contacts);
   // First straight toward the target pose, then, if that is blocked, by sliding and rolling
   // the contact points toward the target's.
   for (bool by_contacts : {false, true}) {
