@@ -1,0 +1,179 @@
+#include "app/render/figure_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/core/error.h"
+#include "engine/generator/graph_io.h"
+#include "render/canvas.h"
+#include "render/contact_sheet.h"
+#include "render/png_writer.h"
+#include "render/transition_json.h"
+
+namespace pcsg::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw Error("cannot write '" + path + "'");
+  f << text;
+}
+
+std::string two_digits(int i) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%02d", i);
+  return buf;
+}
+
+}  // namespace
+
+FigureWriter::FigureWriter(const SceneGeometry& scene, const FigureWriterOptions& options)
+    : scene_(scene), options_(options) {
+  fs::create_directories(options_.folder);
+  if (options_.states) fs::create_directories(path("states"));
+  renderer_ = std::make_unique<render::SceneRenderer>(scene_);
+  options_.thumbnail.camera = options_.camera;
+  options_.frame.camera = options_.camera;
+}
+
+FigureWriter::~FigureWriter() = default;
+
+std::string FigureWriter::path(const std::string& relative) const {
+  return (fs::path(options_.folder) / relative).string();
+}
+
+void FigureWriter::draw_apart() {
+  render::FrameRequest f;
+  f.width = options_.picture_width;
+  f.height = options_.picture_height;
+  f.camera = options_.camera;
+  f.title = scene_.spec.name;
+  f.subtitle = "objects apart";
+  render::write_png_fast(renderer_->render(f), path("apart.png"));
+  summary_.figures.push_back(path("apart.png"));
+}
+
+void FigureWriter::consume(FigureEvent& event) {
+  std::visit([&](auto& e) { on(e); }, event);
+}
+
+void FigureWriter::on(StateFound& e) {
+  // each state's own picture, framed on it; the diagram's and the grid's thumbnails are drawn
+  // at the end, framed alike on all states
+  const State& s = e.state;
+  if (!options_.states) return;
+  render::StatePictureOptions big;
+  big.width = options_.picture_width;
+  big.height = options_.picture_height;
+  big.camera = options_.camera;
+  big.labels = true;
+  big.header = true;
+  const render::Image picture = renderer_->render(render::state_frame_request(scene_, s, big));
+  render::write_png_fast(picture, path("states/state-" + two_digits(s.id) + ".png"));
+  if (s.seed && !seed_written_) {  // the first seed: the paper's Fig. 5b / 7b
+    seed_written_ = true;
+    render::write_png_fast(picture, path("seed.png"));
+    summary_.figures.push_back(path("seed.png"));
+  }
+}
+
+void FigureWriter::on(CandidateTried& e) {
+  ++summary_.candidates;
+  summary_.feasible += e.candidate.feasible;
+}
+
+void FigureWriter::on(TransitionStarted& e) {
+  current_ = e;
+  current_folder_ = path("transitions/" + render::transition_slug(e.info));
+  fs::create_directories(current_folder_);
+  // a sequence written again (a second run into the same folder) must not keep old frames
+  for (const auto& entry : fs::directory_iterator(current_folder_))
+    if (entry.path().filename().string().rfind("frame-", 0) == 0) fs::remove(entry.path());
+  sheet_frames_.clear();
+  sheet_meta_.clear();
+  current_roles_.clear();
+  // one framing for the whole sequence: the animation does not jitter
+  current_renderer_.reset();
+  current_scene_ = std::make_unique<SceneGeometry>(
+      render::framed_scene(scene_, render::extent_of_A(scene_, e.poses)));
+  current_renderer_ = std::make_unique<render::SceneRenderer>(*current_scene_);
+}
+
+void FigureWriter::on(TransitionFrameReady& e) {
+  const render::Image view =
+      render::draw_transition_view(*current_renderer_, *current_scene_, current_.info, e.frame,
+                                   current_.start, e.roles, options_.frame);
+  const render::Image frame = render::add_transition_header(view, scene_, current_.info, e.frame,
+                                                            current_.start, e.roles, text_);
+  char name[32];
+  std::snprintf(name, sizeof name, "frame-%04d.png", e.ordinal);
+  render::write_png_fast(frame, (fs::path(current_folder_) / name).string());
+  const int h = view.height * options_.sheet_cell_width / view.width;
+  sheet_frames_.push_back(render::resized(view, options_.sheet_cell_width, std::max(1, h)));
+  sheet_meta_.push_back(std::move(e.frame));
+  current_roles_.push_back(std::move(e.roles));
+  ++summary_.frames;
+}
+
+void FigureWriter::on(TransitionFinished& e) {
+  (void)e;
+  if (!sheet_frames_.empty()) {
+    // the sheet's cells already have the cell width: no second resize
+    const render::Image sheet = render::transition_contact_sheet(
+        current_.info, sheet_frames_, sheet_meta_, current_roles_, current_.start, scene_,
+        options_.sheet_cell_width, text_);
+    render::write_png_fast(sheet, (fs::path(current_folder_) / "contact_sheet.png").string());
+  }
+  render::TransitionRecord record{current_.info, current_.start, std::move(sheet_meta_),
+                                  std::move(current_roles_)};
+  write_text((fs::path(current_folder_) / "frames.json").string(),
+             render::transition_to_json(record, scene_));
+  sheet_frames_.clear();
+  sheet_meta_.clear();
+  current_roles_.clear();
+  current_renderer_.reset();
+  current_scene_.reset();
+  ++summary_.transitions;
+}
+
+void FigureWriter::on(TransitionSkipped& e) {
+  summary_.skipped.push_back("candidate " + std::to_string(e.index) + ": " + e.why);
+}
+
+void FigureWriter::on(GraphFinished& e) {
+  const StateGraph& g = e.graph;
+  summary_.states = g.states.size();
+  summary_.links = g.links.size();
+  summary_.generation_seconds = g.stats.seconds;
+  summary_.finished = true;
+  write_text(path("graph.json"), graph_to_json(g, scene_));
+  write_text(path("graph.dot"), graph_to_dot(g, scene_));
+  // the thumbnails of the diagram and the grid, all framed alike
+  std::vector<render::Image> pictures;
+  if (options_.diagram || options_.states)
+    pictures = render::draw_state_thumbnails(scene_, g.states, options_.thumbnail);
+  if (options_.diagram && !g.states.empty()) {
+    render::StateDiagramOptions d;
+    d.motion_labels = options_.motion_labels;
+    const render::Diagram diagram = render::draw_state_diagram(g, scene_, pictures, d, text_);
+    render::write_png_fast(diagram.image, path("diagram.png"));
+    write_text(path("diagram.dot"), diagram.dot);
+    summary_.figures.push_back(path("diagram.png"));
+  }
+  if (options_.states && !g.states.empty()) {
+    std::vector<render::SheetCell> cells;
+    for (std::size_t i = 0; i < g.states.size(); ++i)
+      cells.push_back({pictures[i], render::state_caption(g.states[i], scene_), false, g.states[i].seed});
+    render::SheetOptions o;
+    o.title = g.scene;
+    o.subtitle = std::to_string(g.states.size()) + " valid point-contact states";
+    render::write_png_fast(render::compose_contact_sheet(cells, o, text_), path("states.png"));
+    summary_.figures.push_back(path("states.png"));
+  }
+}
+
+}  // namespace pcsg::app

@@ -1,0 +1,82 @@
+#pragma once
+// The main thread's side of `pcsg figures`: draws every event of the figure pipeline as it
+// arrives and writes the files of one scene into its folder:
+//   apart.png                     the objects apart, every face and edge named (Fig. 5a, 7a)
+//   states/state-NN.png           every valid state with its CF and contacts (Fig. 5b, 7b)
+//   states.png                    the grid of all valid states (Fig. 8)
+//   diagram.png, diagram.dot      the graph as a diagram of state pictures (Fig. 6)
+//   graph.json, graph.dot         the graph (engine/generator/graph_io.h)
+//   transitions/<from>-<cf>/      frame-NNNN.png, contact_sheet.png, frames.json per candidate
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/render/figure_pipeline.h"
+#include "render/framed_scene.h"
+#include "render/scene_renderer.h"
+#include "render/state_diagram.h"
+#include "render/text_painter.h"
+
+namespace pcsg::app {
+
+struct FigureWriterOptions {
+  std::string folder;  // where the scene's files go (created)
+  render::Camera camera;
+  int picture_width = 1280, picture_height = 960;  // states/state-NN.png, apart.png
+  render::StatePictureOptions thumbnail;            // diagram nodes and grid cells
+  render::TransitionFrameStyle frame;               // transition frames
+  int sheet_cell_width = 400;                       // frames in a contact sheet
+  bool states = true, diagram = true, transitions = true;
+  bool motion_labels = true;
+};
+
+struct FigureSummary {
+  std::size_t states = 0, links = 0, candidates = 0, feasible = 0;
+  int transitions = 0, frames = 0;  // drawn
+  std::vector<std::string> skipped;  // candidates whose motion could not be replayed, and why
+  double generation_seconds = 0;
+  GenerationProgress progress;      // the last reported
+  bool finished = false;
+  std::vector<std::string> figures;  // files written that a reader looks at first
+};
+
+class FigureWriter {
+ public:
+  FigureWriter(const SceneGeometry& scene, const FigureWriterOptions& options);
+  ~FigureWriter();
+  // apart.png; before the stream starts.
+  void draw_apart();
+  void consume(FigureEvent& event);
+  const FigureSummary& summary() const { return summary_; }
+  const std::string& folder() const { return options_.folder; }
+
+ private:
+  void on(StateFound& e);
+  void on(CandidateTried& e);
+  void on(GenerationProgress& e) { summary_.progress = e; }
+  void on(GraphFinished& e);
+  void on(TransitionStarted& e);
+  void on(TransitionFrameReady& e);
+  void on(TransitionFinished& e);
+  void on(TransitionSkipped& e);
+  std::string path(const std::string& relative) const;
+
+  const SceneGeometry& scene_;
+  FigureWriterOptions options_;
+  std::unique_ptr<render::SceneRenderer> renderer_;
+  render::TextPainter text_;
+  // the transition being drawn, with a renderer framed on all its poses (render/framed_scene.h)
+  TransitionStarted current_;
+  std::unique_ptr<SceneGeometry> current_scene_;
+  std::unique_ptr<render::SceneRenderer> current_renderer_;
+  std::string current_folder_;
+  std::vector<render::Image> sheet_frames_;
+  std::vector<MotionFrame> sheet_meta_;
+  std::vector<std::vector<render::ContactRole>> current_roles_;
+  FigureSummary summary_;
+  bool seed_written_ = false;
+};
+
+}  // namespace pcsg::app

@@ -1,0 +1,234 @@
+// `pcsg figures`: the bounded queue and the generator's event stream between threads (no
+// event lost, order kept, producers released when the consumer stops), and end-to-end runs of
+// the binary on stored graphs (tests/data/graphs), which keep them to a few seconds.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+
+#include "app/render/graph_event_stream.h"
+
+namespace pcsg::app {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+TEST(BoundedQueueTest, KeepsOrderAndCapacity) {
+  BoundedQueue<int> q(3);
+  constexpr int kItems = 1000;
+  std::thread producer([&] {
+    for (int i = 0; i < kItems; ++i) ASSERT_TRUE(q.push(i));
+    q.close();
+  });
+  int expected = 0;
+  while (std::optional<int> v = q.pop()) {
+    EXPECT_EQ(*v, expected++);
+    if (expected % 100 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  producer.join();
+  EXPECT_EQ(expected, kItems) << "every item arrives";
+  EXPECT_LE(q.high_water(), q.capacity());
+}
+
+TEST(BoundedQueueTest, CloseReleasesABlockedProducerAndDrains) {
+  BoundedQueue<int> q(1);
+  ASSERT_TRUE(q.push(1));
+  bool second = true;
+  std::thread producer([&] { second = q.push(2); });  // blocks: the queue is full
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  q.close();
+  producer.join();
+  EXPECT_FALSE(second) << "a push into a closed queue fails";
+  EXPECT_EQ(q.pop(), std::optional<int>(1)) << "what was queued is still delivered";
+  EXPECT_EQ(q.pop(), std::nullopt);
+}
+
+// The generator's listener calls, made from a worker thread as generate_graph makes them,
+// reach a slow consumer complete and in order.
+TEST(GraphEventStreamTest, SlowConsumerLosesNothing) {
+  constexpr int kStates = 40, kCandidatesPerState = 3;
+  BoundedQueue<GraphEvent> q(4);
+  std::atomic<bool> cancel{false};
+  std::thread generator([&] {
+    GraphEventStream stream(q, cancel);
+    StateGraph g;
+    for (int i = 0; i < kStates; ++i) {
+      State s;
+      s.id = i;
+      g.states.push_back(s);
+      stream.on_state(g, g.states.back());
+      for (int k = 0; k < kCandidatesPerState; ++k) {
+        Candidate c;
+        c.from = i;
+        c.steps = k;
+        stream.on_candidate(g, c);
+        stream.on_progress(g, i, k + 1, kCandidatesPerState);
+      }
+    }
+    stream.push(GraphFinished{g});
+    q.close();
+  });
+  int states = 0, candidates = 0, progress = 0;
+  bool finished = false;
+  while (std::optional<GraphEvent> e = q.pop()) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));  // slower than the producer
+    if (auto* s = std::get_if<StateFound>(&*e)) {
+      EXPECT_EQ(s->state.id, states++);
+    }
+    if (auto* c = std::get_if<CandidateTried>(&*e)) {
+      EXPECT_EQ(c->index, candidates);
+      EXPECT_EQ(c->from.id, candidates / kCandidatesPerState) << "the start state is attached";
+      EXPECT_EQ(c->candidate.steps, candidates % kCandidatesPerState);
+      ++candidates;
+    }
+    if (std::get_if<GenerationProgress>(&*e)) ++progress;
+    if (auto* f = std::get_if<GraphFinished>(&*e)) {
+      finished = true;
+      EXPECT_EQ(f->graph.states.size(), static_cast<std::size_t>(kStates));
+    }
+  }
+  generator.join();
+  EXPECT_EQ(states, kStates);
+  EXPECT_EQ(candidates, kStates * kCandidatesPerState);
+  EXPECT_EQ(progress, kStates * kCandidatesPerState);
+  EXPECT_TRUE(finished);
+  EXPECT_FALSE(cancel);
+  EXPECT_LE(q.high_water(), q.capacity());
+}
+
+TEST(GraphEventStreamTest, AStoppedConsumerCancelsTheGenerator) {
+  BoundedQueue<GraphEvent> q(2);
+  std::atomic<bool> cancel{false};
+  std::thread generator([&] {
+    GraphEventStream stream(q, cancel);
+    StateGraph g;
+    g.states.resize(1);
+    while (!cancel) stream.on_progress(g, 0, 0, 0);  // as generate_graph checks its flag
+  });
+  ASSERT_TRUE(q.pop().has_value());
+  q.close();  // the consumer gives up
+  generator.join();
+  EXPECT_TRUE(cancel);
+}
+
+struct ExeRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+ExeRun run_pcsg(const std::string& args) {
+  const std::string cmd = std::string(PCSG_EXE) + " " + args + " 2>&1";
+  ExeRun r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf;
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string source(const std::string& relative) { return std::string(PCSG_SOURCE_DIR) + "/" + relative; }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("pcsg_figures_test_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+#if PCSG_WITH_RENDER
+
+// The failed candidate of the stored Example 2 graph whose motion collides soonest.
+int cheapest_collision(const json& graph) {
+  int best = -1;
+  std::pair<int, int> cost{1 << 30, 0};
+  for (std::size_t i = 0; i < graph["candidates"].size(); ++i) {
+    const json& c = graph["candidates"][i];
+    const std::string reason = c.value("reason", std::string());
+    const std::string motion = c["motion"].get<std::string>();
+    const std::size_t at = reason.rfind(motion + ":");
+    if (c["feasible"].get<bool>() || at == std::string::npos ||
+        reason.find("collision", at) == std::string::npos)
+      continue;
+    const std::pair<int, int> k{c["attempts"].get<int>(), c["steps"].get<int>()};
+    if (k < cost) cost = k, best = static_cast<int>(i);
+  }
+  return best;
+}
+
+TEST(FiguresCommandTest, FailedCandidateSequenceEndsAtTheCollision) {
+  std::ifstream in(source("tests/data/graphs/example2.json"));
+  const json graph = json::parse(in);
+  const int k = cheapest_collision(graph);
+  ASSERT_GE(k, 0);
+  const fs::path out = fresh_dir("collision");
+  const ExeRun r = run_pcsg("figures -q --scene " + source("scenes/example2.yaml") + " --graph " +
+                            source("tests/data/graphs/example2.json") +
+                            " --only transitions --stride 1 --candidate " + std::to_string(k) +
+                            " --size 320x240 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("drew 1 transitions"), std::string::npos) << r.out;
+  const fs::path transitions = out / "example2" / "transitions";
+  ASSERT_TRUE(fs::is_directory(transitions));
+  std::vector<fs::path> folders;
+  for (const auto& f : fs::directory_iterator(transitions)) folders.push_back(f.path());
+  ASSERT_EQ(folders.size(), 1u);
+  std::ifstream fin(folders[0] / "frames.json");
+  const json frames = json::parse(fin);
+  ASSERT_FALSE(frames["frames"].empty());
+  const json& last = frames["frames"].back();
+  EXPECT_EQ(last["phase"], "collision") << "the sequence ends at the collision";
+  EXPECT_FALSE(last["collided_a"].empty());
+  EXPECT_FALSE(last["collided_b"].empty());
+  EXPECT_FALSE(frames["feasible"].get<bool>());
+  // with --stride 1 every replayed frame is drawn: one PNG per frame, and the sheet
+  std::size_t pngs = 0;
+  for (const auto& f : fs::directory_iterator(folders[0]))
+    pngs += f.path().filename().string().rfind("frame-", 0) == 0;
+  EXPECT_EQ(pngs, frames["frames"].size());
+  EXPECT_TRUE(fs::exists(folders[0] / "contact_sheet.png"));
+}
+
+TEST(FiguresCommandTest, DiagramOnlyFromAStoredGraph) {
+  const fs::path out = fresh_dir("diagram");
+  const ExeRun r = run_pcsg("figures -q --scene " + source("scenes/example1.yaml") + " --graph " +
+                            source("tests/data/graphs/example1.json") + " --only diagram --out " +
+                            out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const fs::path d = out / "example1";
+  EXPECT_TRUE(fs::exists(d / "diagram.png"));
+  EXPECT_TRUE(fs::exists(d / "diagram.dot"));
+  EXPECT_TRUE(fs::exists(d / "graph.json"));
+  EXPECT_TRUE(fs::exists(d / "graph.dot"));
+  EXPECT_TRUE(fs::exists(out / "fig6.png")) << "Example 1's diagram is the paper's Fig. 6";
+  EXPECT_FALSE(fs::exists(d / "transitions"));
+  EXPECT_FALSE(fs::exists(d / "apart.png"));
+}
+
+TEST(FiguresCommandTest, RejectsUnknownParts) {
+  const ExeRun r = run_pcsg("figures --only pictures --out " + fresh_dir("bad").string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("--only pictures"), std::string::npos) << r.out;
+}
+
+#else
+
+TEST(FiguresCommandTest, SaysItWasBuiltWithoutTheRenderer) {
+  const ExeRun r = run_pcsg("figures --out " + fresh_dir("norender").string());
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("without the renderer"), std::string::npos) << r.out;
+}
+
+#endif
+
+}  // namespace
+}  // namespace pcsg::app

@@ -1,0 +1,129 @@
+// Metamorphic test: swapping A and B (engine/scene/scene_swap.h) gives the mirrored graph.
+// Every PtC alpha_A-alpha_B becomes alpha_B-alpha_A with the mirrored type (f-e <-> e-f,
+// f-v <-> v-f, e-v <-> v-e), and a motion that keeps A's contact points (slidingA) keeps the
+// new B's (slidingB).
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "engine/scene/scene_swap.h"
+#include "stress_support.h"
+
+namespace pcsg {
+namespace {
+
+using testing::Generated;
+using testing::generate;
+
+PtcType mirrored(PtcType t) {
+  switch (t) {
+    case PtcType::FE: return PtcType::EF;
+    case PtcType::EF: return PtcType::FE;
+    case PtcType::FV: return PtcType::VF;
+    case PtcType::VF: return PtcType::FV;
+    case PtcType::EV: return PtcType::VE;
+    case PtcType::VE: return PtcType::EV;
+    default: return t;  // f-f, e-e-cross, e-e-touch, v-v are symmetric
+  }
+}
+
+// A CF of the swapped scene written in the original scene's elements and notation.
+std::string mirrored_cf(const ContactFormation& cf, const SceneGeometry& swapped,
+                        const SceneGeometry& original) {
+  ContactFormation out;
+  for (const PtcCount& e : cf.entries()) {
+    const ElementId a = original.A.find(swapped.B.element_name(e.b));
+    const ElementId b = original.B.find(swapped.A.element_name(e.a));
+    EXPECT_GE(a.index, 0) << swapped.B.element_name(e.b);
+    EXPECT_GE(b.index, 0) << swapped.A.element_name(e.a);
+    if (a.index < 0 || b.index < 0) return "?";
+    out.add(a, b, mirrored(e.type), e.count);
+  }
+  return out.str(original);
+}
+
+// "slidingA" <-> "slidingB" in a motion name ("slidingA+rotation", ...).
+std::string mirrored_motion(std::string m) {
+  for (char& c : m) {
+    if (&c > m.data() + 6 && std::string_view(&c - 7, 7) == "sliding" && (c == 'A' || c == 'B'))
+      c = c == 'A' ? 'B' : 'A';
+  }
+  return m;
+}
+
+TEST(Metamorphic, MirroredMotionNamesSwapSlidingAAndB) {
+  EXPECT_EQ(mirrored_motion("slidingA+rotation"), "slidingB+rotation");
+  EXPECT_EQ(mirrored_motion("slidingB"), "slidingA");
+  EXPECT_EQ(mirrored_motion("combined+rotation@+45deg"), "combined+rotation@+45deg");
+}
+
+// The swapped scene's graph, mirrored, against the original's: the same states (with
+// repeats), the same adjacent pairs, and the sliding motions of each pair mirrored.
+void expect_mirrored(const Generated& original, const Generated& swapped) {
+  testing::expect_witnesses_valid(swapped);
+
+  // the states, by their mirrored CFs (with repeats)
+  std::vector<std::string> want, got;
+  for (const State& s : original.graph.states) want.push_back(s.cf.str(original.scene));
+  for (const State& s : swapped.graph.states)
+    got.push_back(mirrored_cf(s.cf, swapped.scene, original.scene));
+  EXPECT_EQ(testing::sorted(got), testing::sorted(want)) << "got:\n" << testing::join(got);
+
+  // the links, as unordered mirrored pairs, and the motions that made them, mirrored
+  std::map<std::string, std::vector<std::string>> want_links, got_links;
+  for (const Link& l : original.graph.links)
+    if (l.kind == LinkKind::LN)
+      want_links[testing::adjacent_pair(original.graph.states[l.from].cf.str(original.scene),
+                                        original.graph.states[l.to].cf.str(original.scene))]
+          .push_back(l.motion);
+  for (const Link& l : swapped.graph.links)
+    if (l.kind == LinkKind::LN)
+      got_links[testing::adjacent_pair(
+                    mirrored_cf(swapped.graph.states[l.from].cf, swapped.scene, original.scene),
+                    mirrored_cf(swapped.graph.states[l.to].cf, swapped.scene, original.scene))]
+          .push_back(mirrored_motion(l.motion));
+  std::vector<std::string> want_pairs, got_pairs;
+  for (const auto& [pair, motions] : want_links) want_pairs.push_back(pair);
+  for (const auto& [pair, motions] : got_links) got_pairs.push_back(pair);
+  EXPECT_EQ(got_pairs, want_pairs) << "got:\n" << testing::join(got_pairs);
+  // each pair joined by a sliding motion on one side is joined by the mirrored one on the
+  // other: the motion families correspond (the variant tried first may differ)
+  for (const auto& [pair, motions] : want_links) {
+    const auto it = got_links.find(pair);
+    if (it == got_links.end()) continue;
+    auto family = [](const std::vector<std::string>& ms, const char* f) {
+      return std::any_of(ms.begin(), ms.end(),
+                         [&](const std::string& m) { return m.find(f) != std::string::npos; });
+    };
+    for (const char* f : {"slidingA", "slidingB"})
+      EXPECT_EQ(family(it->second, f), family(motions, f)) << pair << ": " << f;
+  }
+}
+
+// A lens (faces fS, fC, edge eA) against a ball: three states, e-f becomes f-e.
+TEST(Metamorphic, SwappingAAndBMirrorsTheLensOnBallGraph) {
+  const SceneSpec spec = load_scene_file(testing::stress_path("weak_edge_sine_0.1.yaml"));
+  const Generated original = generate(spec), swapped = generate(swap_objects(spec));
+  ASSERT_EQ(original.graph.states.size(), 3u);
+  expect_mirrored(original, swapped);
+}
+
+TEST(Metamorphic, SwappingAAndBMirrorsTheTwoLensGraph) {
+  GTEST_SKIP() << "generator defect (CF-connected regions, engine/generator): the original "
+                  "has 10 states, the swapped run 13 (mirrored: 3 x {(eA-eB, 1)}, "
+                  "2 x {(eA-fB1, 1)}, 2 x {(fA1-eB, 1)}); the rims' crossing has two regions, "
+                  "the e-f and f-e CFs one each (stress_edges_test.cc).";
+  SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
+  spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)
+  spec.seeds.clear();
+  expect_mirrored(generate(spec), generate(swap_objects(spec)));
+}
+
+// Two generations of Example 1, the swapped one the slower (the bowl is then A): ~75 s of CPU.
+TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  expect_mirrored(generate(spec), generate(swap_objects(spec)));
+}
+
+}  // namespace
+}  // namespace pcsg

@@ -1,0 +1,152 @@
+// Stress scenes at edges (scenes/stress/): a weak edge (two faces meeting at a dihedral angle
+// close to 180 degrees) and two edges touching with collinear or nearly collinear tangents
+// (e-e-touch against e-e-cross). Both scenes are pairs of convex solids, so every state is a
+// single contact and the graphs follow from the elements' adjacency alone.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "stress_support.h"
+
+namespace pcsg {
+namespace {
+
+using testing::adjacent_pair;
+using testing::Generated;
+using testing::generate;
+using testing::stress_path;
+
+void expect_lens_on_ball_graph(const char* file) {
+  const Generated g = generate(load_scene_file(stress_path(file)));
+  expect_graph(g, {"{(fS-fB, 1)}", "{(eA-fB, 1)}", "{(fC-fB, 1)}"},
+               {adjacent_pair("{(fS-fB, 1)}", "{(eA-fB, 1)}"),
+                adjacent_pair("{(eA-fB, 1)}", "{(fC-fB, 1)}")});
+}
+
+TEST(StressEdges, ModerateEdgeAgainstABall) { expect_lens_on_ball_graph("weak_edge_sine_0.1.yaml"); }
+
+TEST(StressEdges, WeakEdgeAgainstABall) {
+  GTEST_SKIP() << "generator defect (engine/generator transition motions): with the faces' "
+                  "normals 0.567 degrees apart at the edge (sine 9.9e-3, above "
+                  "tangential_sine 1e-3), {(eA-fB, 1)} is never reached: every motion from "
+                  "fS-fB or fC-fB reports \"contact eA-fB became fC-fB (f-f)\" (resp. fS-fB), "
+                  "i.e. the contact crosses the edge's 0.57-degree normal cone within one step "
+                  "and the event is not located; slidingB \"did not reach the target within "
+                  "329 steps\". The graph has 2 states and no links. At sine 0.03 and 0.1 the "
+                  "graph is right.";
+  expect_lens_on_ball_graph("weak_edge.yaml");
+}
+
+// The lenses of collinear_edges.yaml side by side, A turned by `phi` about the line of centres
+// (B's x axis through the contact (1.5, 0, 0)): the rims keep touching there, their tangents
+// at sine phi.
+Pose turned(double phi) {
+  Pose X;
+  X.position = {2.5, 0, 0};
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitX()));
+  return X;
+}
+
+TEST(StressEdges, CollinearRimsClassifyAsTouchThenCrossWithoutFlicker) {
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(stress_path("collinear_edges.yaml")));
+  const double collinear = scene.tol.collinear_sine;
+  int switches = 0;
+  PtcType last = PtcType::EETouch;
+  for (double phi = 0; phi < 0.2; phi = phi == 0 ? 1e-12 : phi * std::sqrt(10.0)) {
+    const ContactReport rep = detect_contacts(scene, turned(phi));
+    ASSERT_EQ(rep.contacts.size(), 1u) << "phi " << phi;
+    ASSERT_FALSE(rep.penetrating()) << "phi " << phi;
+    const PointContact& c = rep.contacts[0];
+    EXPECT_EQ(element_pair_name(scene, c.a, c.b), "eA-eB");
+    EXPECT_NEAR(c.gap, 0, scene.tol.contact_gap) << "phi " << phi;
+    // a decade on either side of the threshold the type is certain
+    if (phi <= collinear / 10) {
+      EXPECT_EQ(c.type, PtcType::EETouch) << "phi " << phi;
+    }
+    if (phi >= collinear * 10) {
+      EXPECT_EQ(c.type, PtcType::EECross) << "phi " << phi;
+    }
+    switches += c.type != last;
+    last = c.type;
+  }
+  EXPECT_EQ(switches, 1) << "the type changes once as the tangents turn apart";
+}
+
+// For an e-e-cross contact the normal is the cross product of the tangents: here (1, 0, 0)
+// at every phi. Tangents exact to ~1e-12 give it to ~1e-12 / phi; asked: 1e-9 / phi.
+TEST(StressEdges, NearlyCollinearCrossingHasTheExactNormal) {
+  GTEST_SKIP() << "engine defect (engine/contact e-e solve near collinear tangents): at phi = "
+                  "3e-7 and 1e-6 the e-e-cross normal is (0.9985, 0, 0.054), 3.1 degrees "
+                  "from the exact (1, 0, 0); at 1e-5 it is off by 4e-5. The tangents it is "
+                  "built from are off by ~5e-8, far above the exact solve's ~1e-12.";
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(stress_path("collinear_edges.yaml")));
+  for (double phi : {3e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+    const ContactReport rep = detect_contacts(scene, turned(phi));
+    ASSERT_EQ(rep.contacts.size(), 1u) << "phi " << phi;
+    EXPECT_EQ(rep.contacts[0].type, PtcType::EECross) << "phi " << phi;
+    EXPECT_LE((rep.contacts[0].normal_B - Eigen::Vector3d::UnitX()).norm(), 1e-9 / phi)
+        << "phi " << phi << " normal " << rep.contacts[0].normal_B.transpose();
+  }
+}
+
+// The nine pairs (fA1, eA, fA2) x (fB1, eB, fB2), adjacent when one element changes to an
+// adjacent one (fA1 - eA - fA2, fB1 - eB - fB2): a 3 x 3 grid, 12 pairs. The rims crossing,
+// {(eA-eB, 1)}, is two regions (stress_support.h: rim_crossing_sign), so ten states.
+std::vector<std::string> lens_grid_states() {
+  std::vector<std::string> out;
+  for (const char* a : {"fA1", "eA", "fA2"})
+    for (const char* b : {"fB1", "eB", "fB2"})
+      out.push_back("{(" + std::string(a) + "-" + b + ", 1)}");
+  return out;
+}
+std::vector<std::string> lens_grid_adjacency() {
+  const std::vector<std::string> s = lens_grid_states();  // row-major 3 x 3
+  std::vector<std::string> out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (i + 1 < 3) out.push_back(adjacent_pair(s[3 * i + j], s[3 * (i + 1) + j]));
+      if (j + 1 < 3) out.push_back(adjacent_pair(s[3 * i + j], s[3 * i + j + 1]));
+    }
+  return out;
+}
+
+TEST(StressEdges, TwoLensesFromAutomaticSeeds) {
+  GTEST_SKIP() << "generator defect (CF-connected regions, engine/generator): the graph has "
+                  "the right ten states by CF, but its two {(eA-eB, 1)} states are one region "
+                  "found twice (both cross with (t_A x t_B) . n < 0) and the other region (A "
+                  "turned over, sign > 0) is never reached.";
+  SceneSpec spec = load_scene_file(stress_path("collinear_edges.yaml"));
+  spec.auto_seeds = true;
+  spec.seeds.clear();
+  std::vector<std::string> states = lens_grid_states();
+  states.push_back("{(eA-eB, 1)}");
+  const Generated g = generate(spec);
+  expect_graph(g, states, lens_grid_adjacency());
+  testing::expect_both_crossing_regions(g, "eA-eB");
+}
+
+// From the listed seeds (the touch, and the crossing at sine 1e-4): the same, plus the touch
+// state linked to the four states where one rim lies on the other lens's face. (The touch has
+// two regions too, rims parallel or antiparallel; e-e-touch is never hypothesised, so only
+// the seed's, antiparallel, is in the graph.)
+TEST(StressEdges, TwoLensesFromTheTouchingAndNearlyCollinearSeeds) {
+  GTEST_SKIP() << "generator defect (engine/generator motion drive at near-collinear edges): "
+                  "from the e-e-touch seed every motion stops with \"contact eA-eB makes no "
+                  "progress toward fA1-eB\" (and the 3 other neighbours), from the e-e-cross "
+                  "seed at sine 1e-4 with \"contact eA-eB has no rates at step 0\": the graph "
+                  "is the two seeds, no links.";
+  const Generated g = generate(load_scene_file(stress_path("collinear_edges.yaml")));
+  std::vector<std::string> states = lens_grid_states(), adj = lens_grid_adjacency();
+  states.push_back("{(eA-eB, 1)}");
+  states.push_back("{(eA-eB, 1, touch)}");
+  for (const char* n : {"{(fA1-eB, 1)}", "{(fA2-eB, 1)}", "{(eA-fB1, 1)}", "{(eA-fB2, 1)}"})
+    adj.push_back(adjacent_pair("{(eA-eB, 1, touch)}", n));
+  expect_graph(g, states, adj);
+  testing::expect_both_crossing_regions(g, "eA-eB");
+}
+
+}  // namespace
+}  // namespace pcsg

@@ -1,0 +1,198 @@
+// Stress scenes with extreme shapes and contact places (scenes/stress/): a needle-like
+// ellipsoid, a seed next to the bifurcation where two contacts merge, contacts at the poles of
+// an ellipsoid and the tips of paraboloids. Each graph must be the one the geometry implies
+// (stated in the scene file's comment and here), or a clear diagnostic.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "stress_support.h"
+
+namespace pcsg {
+namespace {
+
+using testing::adjacent_pair;
+using testing::Generated;
+using testing::generate;
+using testing::stress_path;
+
+// Example 1's single-contact states (Fig. 6) and their adjacency: fA against B's elements
+// in the order f1, e1, f2, e2, f3, each adjacent to the next.
+const std::vector<std::string> kSingles = {"{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-f2, 1)}",
+                                           "{(fA-e2, 1)}", "{(fA-f3, 1)}"};
+std::vector<std::string> chain_of_singles() {
+  std::vector<std::string> adj;
+  for (size_t i = 0; i + 1 < kSingles.size(); ++i)
+    adj.push_back(adjacent_pair(kSingles[i], kSingles[i + 1]));
+  return adj;
+}
+
+TEST(StressShapes, EllipsoidPoleOnTheDishTip) {
+  const SceneSpec spec = load_scene_file(stress_path("poles_on_tips.yaml"));
+  const SceneGeometry scene = build_scene_geometry(spec);
+  // the seed: one exact contact at both vertices, normal along the common axis
+  const ContactReport rep = detect_contacts(scene, spec.seeds.at(0).pose);
+  ASSERT_EQ(rep.contacts.size(), 1u);
+  const PointContact& c = rep.contacts[0];
+  EXPECT_EQ(element_pair_name(scene, c.a, c.b), "fA-f1");
+  const double tol = scene.tol.contact_gap;
+  EXPECT_NEAR(c.point_B.z(), -15.75982 / 10.07047, tol);
+  EXPECT_NEAR(c.point_B.head<2>().norm(), 0, tol);
+  EXPECT_NEAR(c.normal_B.z(), 1, 1e-12) << "unit normal along the axis to round-off";
+  EXPECT_NEAR(c.gap, 0, tol);
+  expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
+}
+
+TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
+  GTEST_SKIP() << "engine defect (contact classification at a point on two surfaces that is "
+                  "on no edge): B's lowest point (0, 0, -4) is f3's vertex and also lies on "
+                  "f2's sphere, tangent to f3 there. At the exact touch (pose 0 0 -6.5, pole "
+                  "on vertex) detect_contacts reports no contact and no penetration (CF {}), "
+                  "so the listed seed is rejected ('touches nothing'); 1e-4 deeper it reports "
+                  "a penetration 'fA-e2 at (0, 0, -3.99995)', attributing the point to edge e2 "
+                  "(the circle r = 4, z = 0, 4 away) because both of e2's surfaces vanish "
+                  "there.";
+  const SceneSpec spec = load_scene_file(stress_path("pole_on_bottom_tip.yaml"));
+  const SceneGeometry scene = build_scene_geometry(spec);
+  const ContactReport rep = detect_contacts(scene, spec.seeds.at(0).pose);
+  ASSERT_EQ(rep.contacts.size(), 1u);
+  EXPECT_EQ(element_pair_name(scene, rep.contacts[0].a, rep.contacts[0].b), "fA-f3");
+  EXPECT_NEAR(rep.contacts[0].point_B.z(), -4, scene.tol.contact_gap);
+  expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
+}
+
+// The lens (Example 2's A) has fA1 - eA - fA2; B has f1 - e1 - f2 - e2 - f3. From a single
+// contact the LN graph (without upward probes) holds single contacts only: every pair of an A element and a B element
+// (each can touch each: A is convex, and turning it over exchanges fA1 and fA2), adjacent when
+// one of the two elements changes to an adjacent one: a 3 x 5 grid of 15 CFs, 22 pairs. The
+// rims crossing, {(eA-e1, 1)} and {(eA-e2, 1)}, are two regions each (rim_crossing_sign):
+// 17 states.
+TEST(StressShapes, LensTipOnTheDishTip) {
+  GTEST_SKIP() << "generator defects on Example 2's lens (engine/generator): with the "
+                  "upward probes off, the graph from this seed has 28 states: all 15 "
+                  "single-contact CFs, but also 7 two-contact CFs (card above the seed's: not "
+                  "in its LN graph), {(eA-e1, 1)} three times (crossing signs -1, -1, +1: one "
+                  "region found twice), {(eA-e2, 1)} once (the + region missing), and "
+                  "{(eA-f1, 1)}, {(fA1-e1, 1)}, {(fA2-e1, 1)} twice each (one region each).";
+  const SceneSpec spec = load_scene_file(stress_path("lens_tip_in_dish.yaml"));
+  const std::vector<std::string> a = {"fA1", "eA", "fA2"}, b = {"f1", "e1", "f2", "e2", "f3"};
+  auto cf = [&](size_t i, size_t j) { return "{(" + a[i] + "-" + b[j] + ", 1)}"; };
+  std::vector<std::string> states, adj;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t j = 0; j < b.size(); ++j) {
+      states.push_back(cf(i, j));
+      if (i + 1 < a.size()) adj.push_back(adjacent_pair(cf(i, j), cf(i + 1, j)));
+      if (j + 1 < b.size()) adj.push_back(adjacent_pair(cf(i, j), cf(i, j + 1)));
+    }
+  ASSERT_EQ(adj.size(), 22u);
+  states.insert(states.end(), {"{(eA-e1, 1)}", "{(eA-e2, 1)}"});
+  const Generated g = generate(spec, /*probe_upward=*/false);
+  ASSERT_EQ(g.graph.states.at(0).cf.str(g.scene), "{(fA1-f1, 1)}");
+  expect_graph(g, states, adj);
+  testing::expect_both_crossing_regions(g, "eA-e1");
+  testing::expect_both_crossing_regions(g, "eA-e2");
+}
+
+// The spheroid lying in the dish, axis along B's x: its two contacts are at x = +-kContactX
+// (scene file comment), found here by minimising the gap of the two profiles numerically.
+constexpr double kDishK = 4 / 10.07047, kDishZ0 = 15.75982 / 10.07047;
+constexpr double kSpheroidC2 = 1.26006755875;
+// gap(x) - gap(0) along the two profiles in the xz plane
+double profile_gap(double x) { return 1 - std::sqrt(1 - x * x / kSpheroidC2) - kDishK * x * x; }
+double contact_x() {
+  double lo = 0, hi = 0.5;  // ternary search: profile_gap is unimodal on [0, 0.5]
+  for (int k = 0; k < 200; ++k) {
+    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (profile_gap(m1) < profile_gap(m2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  return 0.5 * (lo + hi);
+}
+// A on two contacts: its axis (A's z) along B's x, the lowest points at +-contact_x() touching.
+Pose two_contact_pose() {
+  Pose X;
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+  X.position = {0, 0, 1 - kDishZ0 - profile_gap(contact_x())};
+  return X;
+}
+
+TEST(StressBifurcation, AnalyticTwoContactPoseTouchesAtBothPoints) {
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(stress_path("near_matching_curvature.yaml")));
+  const Pose X = two_contact_pose();
+  const double x = contact_x();
+  EXPECT_NEAR(x, 0.0502, 5e-5) << "the scene file's comment";
+  const ElementId fA = scene.A.find("fA"), f1 = scene.B.find("f1");
+  for (double side : {-1.0, 1.0}) {
+    // start from the analytic contact points: A's in A's frame (on its z axis side), B's on f1
+    const Eigen::Vector3d p_B(side * x, 0, kDishK * x * x - kDishZ0);
+    const auto c = solve_pair(scene, X, fA, f1, PtcType::FF, X.apply_inverse(p_B), p_B);
+    ASSERT_TRUE(c.has_value()) << "side " << side;
+    EXPECT_NEAR(c->gap, 0, scene.tol.contact_gap) << "side " << side;
+    EXPECT_NEAR(c->point_B.x(), side * x, 1e-6 * scene.tol.length_scale) << "side " << side;
+  }
+}
+
+TEST(StressBifurcation, BothContactsNextToTheMergeAreDetectedAndGrow) {
+  GTEST_SKIP() << "engine defect (engine/contact detection): two local minima of one element "
+                  "pair inside one overlap region of the inflated meshes give one contact. At "
+                  "the analytic two-contact pose (contacts at x = +-0.0502, 0.8% of L apart, "
+                  "saddle 3.8e-8 L between them) detect_contacts reports {(fA-f1, 1)}; with "
+                  "the curvature 1.01 times the dish's (contacts +-0.158) also one, with 1.03 "
+                  "times (+-0.273) none (Newton from the saddle), with 1.1 times (+-0.490) one. "
+                  "Auto seeds also miss the state (they find the spheroid upright, {(fA-f1, "
+                  "1)}).";
+  SceneSpec spec = load_scene_file(stress_path("near_matching_curvature.yaml"));
+  const SceneGeometry scene = build_scene_geometry(spec);
+  const Pose X = two_contact_pose();
+  // the seed pose: two contacts, and no flicker as A rises through the merge: 2 contacts,
+  // then none once both gaps exceed the contact tolerance
+  const ContactReport at = detect_contacts(scene, X);
+  ASSERT_EQ(ContactFormation::of(at.contacts).str(scene), "{(fA-f1, 2)}");
+  for (const PointContact& c : at.contacts) EXPECT_NEAR(std::abs(c.point_B.x()), contact_x(), 1e-6);
+  for (double rise : {1e-3, 1e-2, 1e-1, 0.5, 10.0, 100.0}) {
+    Pose Y = X;
+    Y.position.z() += rise * scene.tol.contact_gap;
+    EXPECT_EQ(detect_contacts(scene, Y).contacts.size(), rise < 1 ? 2u : 0u) << "rise " << rise;
+  }
+  // from the listed seed: the seed itself, the paper's five single contacts, valid witnesses
+  spec.auto_seeds = false;
+  spec.seeds = {SeedSpec{X, {}}};
+  const Generated g = generate(spec);
+  ASSERT_FALSE(g.graph.states.empty());
+  EXPECT_EQ(g.graph.states[0].cf.str(g.scene), "{(fA-f1, 2)}");
+  std::vector<std::string> got;
+  for (const State& s : g.graph.states) got.push_back(s.cf.str(g.scene));
+  for (const std::string& s : kSingles)
+    EXPECT_EQ(std::count(got.begin(), got.end(), s), 1) << s << "\n" << testing::join(got);
+  testing::expect_witnesses_valid(g);
+}
+
+// A needle (semi-axes 0.025, 0.025, 2.5) has Example 1's states and two more: lying on the
+// rim along a chord shorter than itself, {(fA-e1, 2)}, and leaning on the rim with its lower
+// tip on the dish wall, {(fA-e1, 1), (fA-f1, 1)}. No state has a contact with f2 and another
+// element (a segment tangent to the sphere meets it once, and e1 and e2 lie on it).
+TEST(StressShapes, NeedleInTheDish) {
+  GTEST_SKIP() << "engine defect (geometry kernel, face discovery): build_scene_geometry "
+                  "throws \"object A is empty: its inequalities leave no face on a grid of 24 "
+                  "cells across its box (it has no interior, or is thinner than a cell)\": the "
+                  "needle is 0.05 thick, a cell 5 / 24 = 0.21 (Tolerances::discovery_cells). "
+                  "(At axes 1:1:10 it builds; the graph then has 7 states with {(fA-e1, 1)} "
+                  "twice and neither two-contact rim state.)";
+  const Generated g = generate(load_scene_file(stress_path("needle_in_dish.yaml")));
+  std::vector<std::string> states = kSingles;
+  states.insert(states.end(), {"{(fA-f1, 2)}", "{(fA-e1, 2)}", "{(fA-e1, 1), (fA-f1, 1)}"});
+  std::vector<std::string> got;
+  for (const State& s : g.graph.states) got.push_back(s.cf.str(g.scene));
+  EXPECT_EQ(testing::sorted(got), testing::sorted(states)) << testing::join(got);
+  const std::vector<std::string> adj = testing::adjacency(g.graph, g.scene);
+  for (const std::string& pair : chain_of_singles())
+    EXPECT_NE(std::find(adj.begin(), adj.end(), pair), adj.end()) << pair;
+  testing::expect_witnesses_valid(g);
+}
+
+}  // namespace
+}  // namespace pcsg

@@ -1,0 +1,121 @@
+#pragma once
+// Shared by the stress and metamorphic tests (scenes/stress/): generating a scene, comparing
+// graphs by their states and adjacencies, checking witnesses and scene-file coefficients.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/contact/contact.h"
+#include "generator_test_support.h"
+
+namespace pcsg::testing {
+
+inline std::string stress_path(const std::string& name) {
+  return std::string(PCSG_SOURCE_DIR) + "/scenes/stress/" + name;
+}
+
+struct Generated {
+  SceneGeometry scene;
+  StateGraph graph;
+};
+
+// Two threads: the graph does not depend on the count (generator.h), the run time does.
+// Without `probe_upward` the graph is the seeds' LN graphs (paper Section III) alone.
+inline Generated generate(const SceneSpec& spec, bool probe_upward = true) {
+  Generated g{build_scene_geometry(spec), {}};
+  GeneratorOptions opt;
+  opt.threads = 2;
+  opt.probe_upward = probe_upward;
+  g.graph = generate_graph(g.scene, opt);
+  return g;
+}
+
+inline std::string adjacent_pair(const std::string& a, const std::string& b) {
+  return a < b ? a + " -- " + b : b + " -- " + a;
+}
+
+// Which states are linked, as unordered CF pairs, sorted: the direction of an LN link between
+// two states of equal cardinality depends on which one the BFS reached first, which is not
+// what the stress tests are about (the metamorphic invariance tests compare directed links).
+inline std::vector<std::string> adjacency(const StateGraph& g, const SceneGeometry& scene) {
+  std::vector<std::string> out;
+  for (const Link& l : g.links)
+    out.push_back(adjacent_pair(g.states[l.from].cf.str(scene), g.states[l.to].cf.str(scene)));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+inline std::vector<std::string> sorted(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Every witness, re-checked by the exact contact computation, carries its state's CF and no
+// penetration, and its contacts are exact to 1e-10 L (the generator's own witness check).
+inline void expect_witnesses_valid(const Generated& g) {
+  for (const State& s : g.graph.states) {
+    const ContactReport rep = detect_contacts(g.scene, s.pose);
+    EXPECT_FALSE(rep.penetrating()) << "state " << s.id << " " << s.cf.str(g.scene);
+    EXPECT_EQ(ContactFormation::of(rep.contacts).str(g.scene), s.cf.str(g.scene))
+        << "state " << s.id;
+    for (const PointContact& c : rep.contacts)
+      EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale) << "state " << s.id;
+  }
+}
+
+// The states (CFs with repeats) and the adjacency of a graph equal the expected ones.
+inline void expect_graph(const Generated& g, const std::vector<std::string>& states,
+                         const std::vector<std::string>& adjacent) {
+  std::vector<std::string> got_states;
+  for (const State& s : g.graph.states) got_states.push_back(s.cf.str(g.scene));
+  EXPECT_EQ(sorted(got_states), sorted(states)) << "got states:\n" << join(sorted(got_states));
+  const std::vector<std::string> got_adj = adjacency(g.graph, g.scene);
+  EXPECT_EQ(got_adj, sorted(adjacent)) << "got adjacency:\n" << join(got_adj);
+  expect_witnesses_valid(g);
+}
+
+// Two circular rims centred on their own frames' z axes (the lenses of the stress scenes, the
+// bowl's rims e1 and e2) crossing at a state's e-e contact: the sign of (t_A x t_B) . n, with
+// t = z x p the counterclockwise tangents. It is constant on a region of an e-e-cross CF and
+// changes only through e-e-touch (t_A parallel to t_B), a different CF: so such a CF has two
+// regions, one of each sign (turning a lens over changes the sign).
+inline int rim_crossing_sign(const State& s, const std::string& pair, const SceneGeometry& scene) {
+  for (const PointContact& c : s.contacts)
+    if (element_pair_name(scene, c.a, c.b) == pair) {
+      const Eigen::Vector3d t_A = s.pose.rotate(Eigen::Vector3d::UnitZ().cross(c.p_A));
+      const Eigen::Vector3d t_B = Eigen::Vector3d::UnitZ().cross(c.p_B);
+      return t_A.cross(t_B).dot(c.normal_B) > 0 ? 1 : -1;
+    }
+  ADD_FAILURE() << "state " << s.id << " has no contact " << pair;
+  return 0;
+}
+
+// The states of the e-e-cross CF {(pair, 1)} are two regions of opposite crossing signs.
+inline void expect_both_crossing_regions(const Generated& g, const std::string& pair) {
+  std::vector<int> signs;
+  for (const State& s : g.graph.states)
+    if (s.cf.str(g.scene) == "{(" + pair + ", 1)}") signs.push_back(rim_crossing_sign(s, pair, g.scene));
+  std::sort(signs.begin(), signs.end());
+  EXPECT_EQ(signs, (std::vector<int>{-1, 1})) << pair << ": one region of each crossing sign";
+}
+
+// Each face of `got` is a positive multiple of the same face of `want` (same surface, same
+// solid side), to `relative` of the largest coefficient: a scene file holds what its comment
+// says it is.
+inline void expect_faces_proportional(const ObjectSpec& got, const ObjectSpec& want,
+                                      double relative) {
+  ASSERT_EQ(got.faces.size(), want.faces.size()) << got.name;
+  for (size_t i = 0; i < want.faces.size(); ++i) {
+    const Polynomial &a = got.faces[i].g, &b = want.faces[i].g;
+    const double k = a.max_abs_coeff() / b.max_abs_coeff();
+    for (int n = 0; n < Polynomial::kNumCoeffs; ++n)
+      EXPECT_NEAR(a.coeffs()[n], k * b.coeffs()[n], relative * a.max_abs_coeff())
+          << got.name << "." << got.faces[i].name << " coefficient " << n;
+  }
+}
+
+}  // namespace pcsg::testing
