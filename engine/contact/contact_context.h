@@ -33,6 +33,18 @@ struct MeshIndex {
   int triangle_count() const { return static_cast<int>(centroids.size()); }
 };
 
+// The triangle pairs that may overlap near a reference pose: every pair whose inflated
+// triangles' bounding boxes come within `margin` of each other at `X_BA`. At any pose that moves
+// no point of A's inflated mesh farther than `margin` from where X_BA puts it, the overlapping
+// pairs are among these, so events are located by bisection with one BVH traversal per bracket
+// instead of one per pose.
+struct NearbyTriangles {
+  Pose X_BA;
+  double margin = 0;
+  // Leaf nodes of the two BVHs (A's, B's), so that a pose's test is FCL's own leaf test.
+  std::vector<std::pair<int, int>> leaves;
+};
+
 class ContactContext {
  public:
   // `scene` must outlive the context. `band` (a length, > 0) is the gap up to which local
@@ -51,6 +63,21 @@ class ContactContext {
   // `max_pairs` of them; returns false when that cap cut the list short.
   bool overlapping_triangles(const Pose& X_BA, std::vector<std::pair<int, int>>& pairs,
                              int max_pairs) const;
+
+  // The pairs that may overlap at any pose within `margin` of X_BA (see NearbyTriangles).
+  NearbyTriangles nearby_triangles(const Pose& X_BA, double margin) const;
+  // The same for a smaller neighbourhood, filtered from `wide` when `wide` covers it (poses
+  // within `margin` of X_BA lie within wide.margin of wide.X_BA), else gathered afresh.
+  NearbyTriangles nearby_triangles(const Pose& X_BA, double margin,
+                                   const NearbyTriangles& wide) const;
+  // The same list as overlapping_triangles(X_BA, ...) when displacement(near.X_BA, X_BA) <=
+  // near.margin: FCL's leaf test (leaf boxes, then triangles) on the nearby pairs only. Returns
+  // false when the pose is not covered or the cap would cut the list (then the caller asks
+  // overlapping_triangles).
+  bool overlapping_triangles_near(const Pose& X_BA, const NearbyTriangles& near,
+                                  std::vector<std::pair<int, int>>& pairs, int max_pairs) const;
+  // An upper bound on how far any point of A's inflated mesh moves from pose X to pose Y.
+  double displacement(const Pose& X, const Pose& Y) const;
 
  private:
   struct Models;

@@ -228,7 +228,9 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
     throw std::invalid_argument("detect_contacts: near_margin exceeds the context's band");
   ContactReport report;
   std::vector<std::pair<int, int>> pairs;
-  ctx.overlapping_triangles(X_BA, pairs, kMaxTrianglePairs);
+  if (!options.nearby ||
+      !ctx.overlapping_triangles_near(X_BA, *options.nearby, pairs, kMaxTrianglePairs))
+    ctx.overlapping_triangles(X_BA, pairs, kMaxTrianglePairs);
   const Regions regions = collect_regions(ctx, X_BA, pairs);
 
   // Exact solves, de-duplicated: several candidates of a region reach the same contact.
