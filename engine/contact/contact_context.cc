@@ -255,6 +255,16 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
   return out;
 }
 
+NearbyTriangles ContactContext::nearby_triangles_between(const Pose& X, const Pose& Y,
+                                                         double growth,
+                                                         const NearbyTriangles* wide) const {
+  Pose mid;
+  mid.position = 0.5 * (X.position + Y.position);
+  mid.quaternion = X.quaternion.slerp(0.5, Y.quaternion);
+  const double margin = growth * std::max(displacement(mid, X), displacement(mid, Y));
+  return wide ? nearby_triangles(mid, margin, *wide) : nearby_triangles(mid, margin);
+}
+
 bool ContactContext::overlapping_triangles_near(const Pose& X_BA, const NearbyTriangles& near,
                                                 std::vector<std::pair<int, int>>& pairs,
                                                 int max_pairs) const {

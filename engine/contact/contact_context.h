@@ -70,6 +70,11 @@ class ContactContext {
   // within `margin` of X_BA lie within wide.margin of wide.X_BA), else gathered afresh.
   NearbyTriangles nearby_triangles(const Pose& X_BA, double margin,
                                    const NearbyTriangles& wide) const;
+  // The pairs that may overlap near the way from X to Y: about their middle, with a margin of
+  // `growth` (>= 1) times the displacement to either end; filtered from `wide` when given and
+  // covering.
+  NearbyTriangles nearby_triangles_between(const Pose& X, const Pose& Y, double growth,
+                                           const NearbyTriangles* wide = nullptr) const;
   // The same list as overlapping_triangles(X_BA, ...) when displacement(near.X_BA, X_BA) <=
   // near.margin: FCL's leaf test (leaf boxes, then triangles) on the nearby pairs only. Returns
   // false when the pose is not covered or the cap would cut the list (then the caller asks

@@ -31,12 +31,29 @@ struct UnionFind {
   }
 };
 
-bool adjacent_or_equal(const MeshIndex& idx, int t, int u) {
-  if (t == u) return true;
-  const auto b = idx.neighbors.begin() + idx.neighbor_offsets[t];
-  const auto e = idx.neighbors.begin() + idx.neighbor_offsets[t + 1];
-  return std::binary_search(b, e, u);
-}
+// Marks a set of one mesh's triangles for O(1) membership tests; one per thread, cleared by
+// bumping the generation rather than by writing every triangle.
+struct TriangleMarks {
+  std::vector<unsigned> mark;
+  unsigned generation = 0;
+  void clear(const MeshIndex& idx) {
+    if (mark.size() != static_cast<size_t>(idx.triangle_count())) {
+      mark.assign(idx.triangle_count(), 0);
+      generation = 0;
+    }
+    if (++generation == 0) {  // wrapped: start over
+      std::fill(mark.begin(), mark.end(), 0);
+      generation = 1;
+    }
+  }
+  // Marks t and the triangles sharing a vertex with it.
+  void mark_around(const MeshIndex& idx, int t) {
+    mark[t] = generation;
+    for (int k = idx.neighbor_offsets[t]; k < idx.neighbor_offsets[t + 1]; ++k)
+      mark[idx.neighbors[k]] = generation;
+  }
+  bool marked(int u) const { return mark[u] == generation; }
+};
 
 // Groups the overlapping triangle pairs into connected regions: two pairs are connected when
 // their A triangles and their B triangles are equal or share a vertex. Splitting one region
@@ -47,12 +64,23 @@ std::vector<int> group_pairs(const ContactContext& ctx, std::vector<std::pair<in
   UnionFind uf(n);
   const MeshIndex& iA = ctx.index_A();
   const MeshIndex& iB = ctx.index_B();
+  // Where each A triangle's pairs start in the sorted list (valid where `first_A` marks it).
+  thread_local TriangleMarks first_A, near_B;
+  thread_local std::vector<int> start_A;
+  first_A.clear(iA);
+  start_A.resize(iA.triangle_count());
+  for (int i = n - 1; i >= 0; --i) {
+    first_A.mark[pairs[i].first] = first_A.generation;
+    start_A[pairs[i].first] = i;
+  }
   for (int i = 0; i < n; ++i) {
     const auto [tA, tB] = pairs[i];
+    near_B.clear(iB);
+    near_B.mark_around(iB, tB);  // tB and the B triangles sharing a vertex with it
     auto visit = [&](int nA) {
-      auto lo = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(nA, -1));
-      for (auto it = lo; it != pairs.end() && it->first == nA; ++it)
-        if (adjacent_or_equal(iB, tB, it->second)) uf.unite(i, static_cast<int>(it - pairs.begin()));
+      if (!first_A.marked(nA)) return;
+      for (int j = start_A[nA]; j < n && pairs[j].first == nA; ++j)
+        if (near_B.marked(pairs[j].second)) uf.unite(i, j);
     };
     visit(tA);
     for (int k = iA.neighbor_offsets[tA]; k < iA.neighbor_offsets[tA + 1]; ++k)

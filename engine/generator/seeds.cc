@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "engine/contact/contact_context.h"
 #include "engine/core/error.h"
 #include "engine/generator/motion_drive.h"
 
@@ -14,10 +15,13 @@ namespace {
 
 enum class Contactness { Apart, Touching, Penetrating };
 
+// `nearby` (optional): the triangle pairs that may overlap near X (a bisection bracket).
 Contactness classify(const SceneGeometry& scene, const Pose& X, MotionCounters& counters,
-                     ContactReport* out = nullptr) {
+                     ContactReport* out = nullptr, const NearbyTriangles* nearby = nullptr) {
   ++counters.detections;
-  ContactReport rep = detect_contacts(scene, X);
+  DetectOptions options;
+  options.nearby = nearby;
+  ContactReport rep = detect_contacts(*cached_contact_context(scene), X, options);
   const Contactness c = rep.penetrating()        ? Contactness::Penetrating
                         : rep.contacts.empty() ? Contactness::Apart
                                                : Contactness::Touching;
@@ -32,9 +36,15 @@ bool first_touch(const SceneGeometry& scene, PoseAt at, double lo, double hi,
                  MotionCounters& counters, Pose& touch, ContactReport& rep) {
   // 60 halvings take any bracket of size <= 1e3 L below 1e-15 L.
   constexpr int kMaxBisections = 60;
+  // The bracket is a straight motion: its middle's neighbourhood of half its length covers it.
+  constexpr double kStraightBracket = 1.0;
+  const auto context = cached_contact_context(scene);
+  NearbyTriangles bracket = context->nearby_triangles_between(at(lo), at(hi), kStraightBracket);
   for (int k = 0; k < kMaxBisections; ++k) {
+    if (k > 0)
+      bracket = context->nearby_triangles_between(at(lo), at(hi), kStraightBracket, &bracket);
     const double mid = 0.5 * (lo + hi);
-    const Contactness c = classify(scene, at(mid), counters, &rep);
+    const Contactness c = classify(scene, at(mid), counters, &rep, &bracket);
     if (c == Contactness::Touching) {
       touch = at(mid);
       return true;

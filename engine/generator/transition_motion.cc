@@ -266,12 +266,7 @@ std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks, int* los
 
 NearbyTriangles Motion::nearby_between(const Pose& X, const Pose& Y,
                                        const NearbyTriangles* wide) const {
-  Pose mid;
-  mid.position = 0.5 * (X.position + Y.position);
-  mid.quaternion = X.quaternion.slerp(0.5, Y.quaternion);
-  const double reach = std::max(context_->displacement(mid, X), context_->displacement(mid, Y));
-  return wide ? context_->nearby_triangles(mid, kBracketMargin * reach, *wide)
-              : context_->nearby_triangles(mid, kBracketMargin * reach);
+  return context_->nearby_triangles_between(X, Y, kBracketMargin, wide);
 }
 
 Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
