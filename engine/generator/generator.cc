@@ -284,7 +284,7 @@ StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<SeedCandidate> seeds;
   if (scene_.spec.auto_seeds) {
-    seeds = find_seed_candidates(scene_, counters_);
+    seeds = find_seed_candidates(scene_, counters_, options_.threads);
   } else {
     for (const SeedSpec& s : scene_.spec.seeds) seeds.push_back(seed_from_pose(scene_, s, counters_));
   }
