@@ -34,7 +34,8 @@ struct MeshIndex {
 };
 
 // The triangle pairs that may overlap near a reference pose: every pair whose inflated
-// triangles' bounding boxes come within `margin` of each other at `X_BA`. At any pose that moves
+// triangles' bounding boxes (and their BVH ancestors') come within `margin` of each other at
+// `X_BA`. At any pose that moves
 // no point of A's inflated mesh farther than `margin` from where X_BA puts it, the overlapping
 // pairs are among these, so events are located by bisection with one BVH traversal per bracket
 // instead of one per pose.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <stdexcept>
 #include <thread>
 
 #include "engine/generator/hypothesis.h"
@@ -341,6 +342,17 @@ StateGraph Builder::run() {
 
 StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& options,
                           GeneratorListener* listener, const std::atomic<bool>* cancel) {
+  if (options.motion_step < 0)
+    throw std::invalid_argument("generate_graph: motion_step must be >= 0, got " +
+                                std::to_string(options.motion_step));
+  const double step = options.motion_step * scene.tol.length_scale;
+  if (options.motion_step > 0 && step != scene.tol.motion_step) {
+    // The motions read the step from the scene's tolerances: run on a copy that has it.
+    SceneGeometry stepped = scene;
+    stepped.tol.motion_step = step;
+    Builder b(stepped, options, listener, cancel);
+    return b.run();
+  }
   Builder b(scene, options, listener, cancel);
   return b.run();
 }
