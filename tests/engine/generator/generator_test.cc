@@ -76,6 +76,28 @@ TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
   EXPECT_EQ(graph_to_json(one.graph, one.scene, opt), graph_to_json(two.graph, two.scene, opt));
 }
 
+// GeneratorOptions::motion_step is the scene's Tolerances::motion_step by another route: both
+// give the same graph, and a step other than the scene's changes the motions. On the scene
+// with listed seeds, which skips the seed search.
+TEST(Generator, MotionStepOptionActsAsTheSceneTolerance) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1_two_seeds.yaml"));
+  const double step = 0.9e-2;  // relative to L; the default is 1e-2
+  GeneratorOptions opt;
+  SceneGeometry by_tolerance = build_scene_geometry(spec);
+  by_tolerance.tol.motion_step = step * by_tolerance.tol.length_scale;
+  const StateGraph a = generate_graph(by_tolerance, opt);
+  const SceneGeometry scene = build_scene_geometry(spec);
+  opt.motion_step = step;
+  const StateGraph b = generate_graph(scene, opt);
+  GraphJsonOptions json;
+  json.include_timing = false;
+  EXPECT_EQ(graph_to_json(a, by_tolerance, json), graph_to_json(b, scene, json));
+  opt.motion_step = 0;
+  EXPECT_NE(generate_graph(scene, opt).stats.motion_steps, b.stats.motion_steps);
+  opt.motion_step = -1;
+  EXPECT_THROW(generate_graph(scene, opt), std::invalid_argument);
+}
+
 std::vector<SceneSpec> transformed_copies(const SceneSpec& spec) {
   Pose X;
   X.position = {3.0, -2.0, 5.0};
