@@ -96,6 +96,11 @@ struct Tolerances {
   // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line
   // by ~1e-9 L over a length L, like contact_gap, while round-off is ~1e-14.
   double straight_line_relative = 1e-9;
+  // A solid is a solid of revolution about an axis when each of its polynomials, rotated by a
+  // radian about the axis, changes by less than this times its largest value on a grid over
+  // the solid's box (dimensionless): evaluation round-off is ~1e-15 of that, while a real
+  // asymmetry of 1e-9 moves the surface by ~1e-9 L, the size of contact_gap.
+  double symmetry_relative = 1e-9;
 
   // --- meshes (collision checks and rendering only) ------------------------------------------
   // Default chordal error of the meshes: 1e-3 L keeps a 1280-pixel image within one pixel and
