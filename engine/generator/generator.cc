@@ -399,7 +399,6 @@ void Builder::retry_from_other_witnesses() {
           const int to = add_state(h.cf, r.outcome.end, r.outcome.contacts, false,
                                    from.depth + 1);
           r.candidate.to = to;
-          r.candidate.reason = "from another witness of the state";
           graph_.candidates.push_back(r.candidate);
           add_link(from.id, to, r.candidate.motion);
           grow(to);

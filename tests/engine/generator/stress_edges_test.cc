@@ -122,9 +122,9 @@ std::vector<std::string> lens_grid_adjacency() {
 
 TEST(StressEdges, TwoLensesFromAutomaticSeeds) {
   GTEST_SKIP() << "generator defect (CF-connected regions, engine/generator): the graph has "
-                  "the right ten states by CF, but its two {(eA-eB, 1)} states are one region "
-                  "found twice (both cross with (t_A x t_B) . n < 0) and the other region (A "
-                  "turned over, sign > 0) is never reached.";
+                  "nine of the ten states; the {(eA-eB, 1)} region of crossing sign "
+                  "(t_A x t_B) . n < 0 is found (once: its two witnesses are now joined), the "
+                  "other region (A turned over, sign > 0) is never reached.";
   SceneSpec spec = load_scene_file(stress_path("collinear_edges.yaml"));
   spec.auto_seeds = true;
   spec.seeds.clear();
