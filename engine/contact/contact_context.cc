@@ -146,6 +146,9 @@ bool overlap_within(const Eigen::Matrix3d& R0, const Eigen::Vector3d& T0, const 
 // Relative growth of the nearby-pairs margin over the displacement it must cover: round-off of
 // the box tests is ~1e-15 relative, so 1e-6 covers it with room while adding no pairs.
 constexpr double kMarginRoundOff = 1e-6;
+// Most leaf pairs gathered for one neighbourhood: a full BVH query tests ~10^4 boxes, so a
+// larger set costs more than the few full queries of a bisection it would replace.
+constexpr size_t kMaxNearbyLeaves = 20000;
 
 }  // namespace
 
@@ -227,6 +230,11 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
     const auto& nb = B.getBV(b);
     if (!overlap_within(R, T, na.bv.obb, nb.bv.obb, grown)) continue;
     if (na.isLeaf() && nb.isLeaf()) {
+      if (out.leaves.size() >= kMaxNearbyLeaves) {
+        out.complete = false;
+        out.leaves.clear();
+        return out;
+      }
       out.leaves.emplace_back(a, b);
     } else if (nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size())) {
       stack.emplace_back(na.rightChild(), b);
@@ -241,7 +249,8 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
 
 NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin,
                                                  const NearbyTriangles& wide) const {
-  if (displacement(wide.X_BA, X_BA) + margin > wide.margin) return nearby_triangles(X_BA, margin);
+  if (!wide.complete || displacement(wide.X_BA, X_BA) + margin > wide.margin)
+    return nearby_triangles(X_BA, margin);
   NearbyTriangles out;
   out.X_BA = X_BA;
   out.margin = margin;
@@ -265,10 +274,26 @@ NearbyTriangles ContactContext::nearby_triangles_between(const Pose& X, const Po
   return wide ? nearby_triangles(mid, margin, *wide) : nearby_triangles(mid, margin);
 }
 
+const NearbyTriangles* BracketTriangles::update(const Pose& lo, const Pose& hi) {
+  // Gathering tries for one bisection: each failed one costs about two full queries.
+  constexpr int kMaxTries = 3;
+  const int step = step_++;
+  if (have_) {
+    near_ = context_.nearby_triangles_between(lo, hi, growth_, &near_);
+  } else {
+    if (step < next_try_ || tries_ >= kMaxTries) return nullptr;
+    ++tries_;
+    next_try_ = step + 2;
+    near_ = context_.nearby_triangles_between(lo, hi, growth_);
+  }
+  have_ = near_.complete;
+  return have_ ? &near_ : nullptr;
+}
+
 bool ContactContext::overlapping_triangles_near(const Pose& X_BA, const NearbyTriangles& near,
                                                 std::vector<std::pair<int, int>>& pairs,
                                                 int max_pairs) const {
-  if (displacement(near.X_BA, X_BA) > near.margin) return false;
+  if (!near.complete || displacement(near.X_BA, X_BA) > near.margin) return false;
   Eigen::Matrix3d R;
   Eigen::Vector3d T;
   relative_transform(X_BA, R, T);

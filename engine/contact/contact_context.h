@@ -44,6 +44,9 @@ struct NearbyTriangles {
   double margin = 0;
   // Leaf nodes of the two BVHs (A's, B's), so that a pose's test is FCL's own leaf test.
   std::vector<std::pair<int, int>> leaves;
+  // False when gathering stopped at the cap (nearly conformal surfaces and a wide margin): then
+  // the set answers for no pose.
+  bool complete = true;
 };
 
 class ContactContext {
@@ -91,6 +94,26 @@ class ContactContext {
   double band_ = 0;
   MeshIndex index_A_, index_B_;
   std::unique_ptr<Models> models_;
+};
+
+// The nearby triangle pairs of a bisection's shrinking bracket: gathered at the first step and
+// narrowed as the bracket halves. Where the surfaces are nearly conformal a wide bracket holds
+// too many pairs (the gathering stops at its cap): it is tried again once the bracket has
+// shrunk fourfold, at most a few times; meanwhile the poses are queried in full.
+class BracketTriangles {
+ public:
+  // `growth` (>= 1): the margin over the bracket's half-length (nearby_triangles_between).
+  BracketTriangles(const ContactContext& context, double growth)
+      : context_(context), growth_(growth) {}
+  // The pairs for the bracket [lo, hi] of the next bisection step, or nullptr (query in full).
+  const NearbyTriangles* update(const Pose& lo, const Pose& hi);
+
+ private:
+  const ContactContext& context_;
+  double growth_;
+  NearbyTriangles near_;
+  bool have_ = false;
+  int step_ = 0, next_try_ = 0, tries_ = 0;
 };
 
 // A context for `scene` from a small process-wide cache keyed by the scene's address and

@@ -41,12 +41,11 @@ bool first_touch(const SceneGeometry& scene, PoseAt at, double lo, double hi,
   // The bracket is a straight motion: its middle's neighbourhood of half its length covers it.
   constexpr double kStraightBracket = 1.0;
   const auto context = cached_contact_context(scene);
-  NearbyTriangles bracket = context->nearby_triangles_between(at(lo), at(hi), kStraightBracket);
+  BracketTriangles bracket(*context, kStraightBracket);
   for (int k = 0; k < kMaxBisections; ++k) {
-    if (k > 0)
-      bracket = context->nearby_triangles_between(at(lo), at(hi), kStraightBracket, &bracket);
+    const NearbyTriangles* nearby = bracket.update(at(lo), at(hi));
     const double mid = 0.5 * (lo + hi);
-    const Contactness c = classify(scene, at(mid), counters, &rep, &bracket);
+    const Contactness c = classify(scene, at(mid), counters, &rep, nearby);
     if (c == Contactness::Touching) {
       touch = at(mid);
       return true;

@@ -110,10 +110,7 @@ class Motion {
   // `nearby` (optional) holds the triangle pairs that may overlap near Y (bisection brackets).
   Observation classify(const Pose& Y, const std::vector<Track>& tracks,
                        const NearbyTriangles* nearby = nullptr) const;
-  // The triangle pairs that may overlap anywhere between X and Y (an event's bracket),
-  // filtered from `wide` (the enclosing bracket's) when that covers them.
-  NearbyTriangles nearby_between(const Pose& X, const Pose& Y,
-                                 const NearbyTriangles* wide = nullptr) const;
+
   bool add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys);
   void add_edge_rotation(const Track& t, const TwistFrame& F,
                          const Eigen::Matrix<double, 3, 6>& dn, const Eigen::Vector3d& dir,
@@ -262,11 +259,6 @@ std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks, int* los
     Y = F.apply(Y, minimum_norm_step(J, r));
   }
   return std::nullopt;
-}
-
-NearbyTriangles Motion::nearby_between(const Pose& X, const Pose& Y,
-                                       const NearbyTriangles* wide) const {
-  return context_->nearby_triangles_between(X, Y, kBracketMargin, wide);
 }
 
 Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
@@ -495,9 +487,9 @@ MotionOutcome Motion::run() {
       double lo = 0, hi = frac;
       Pose Y_hi = *Y, Y_lo = X_;
       std::vector<Track> tracks_hi = moved, tracks_lo = tracks_;
-      NearbyTriangles bracket = nearby_between(X_, *Y);
+      BracketTriangles bracket(*context_, kBracketMargin);
       for (int k = 0; k < kBisections; ++k) {
-        if (k > 0) bracket = nearby_between(Y_lo, Y_hi, &bracket);
+        const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
         const double mid = 0.5 * (lo + hi);
         std::vector<Track> tm = tracks_;
         auto Ym = correct(F.apply(X_, *s * mid), tm);
@@ -505,7 +497,7 @@ MotionOutcome Motion::run() {
           hi = mid;
           continue;
         }
-        Observation om = classify(*Ym, tm, &bracket);
+        Observation om = classify(*Ym, tm, nearby);
         if (om.kind == Observation::Same) {
           lo = mid;
           Y_lo = *Ym;
@@ -781,9 +773,9 @@ std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFram
     // Locate the first touch of the new contact between X_ and Y.
     double lo = 0, hi = 1;
     Pose Y_hi = *Y, Y_lo = X_;
-    NearbyTriangles bracket = nearby_between(X_, *Y);
+    BracketTriangles bracket(*context_, kBracketMargin);
     for (int k = 0; k < kBisections; ++k) {
-      if (k > 0) bracket = nearby_between(Y_lo, Y_hi, &bracket);
+      const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
       const double mid = 0.5 * (lo + hi);
       std::vector<Track> tm = tracks_;
       auto Ym = correct(F.apply(X_, *s * mid), tm);
@@ -791,7 +783,7 @@ std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFram
         hi = mid;
         continue;
       }
-      Observation om = classify(*Ym, tm, &bracket);
+      Observation om = classify(*Ym, tm, nearby);
       if (om.kind == Observation::Same) {
         lo = mid;
         Y_lo = *Ym;
