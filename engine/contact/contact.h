@@ -82,13 +82,17 @@ struct ContactReport {
   bool penetrating() const { return !penetrations.empty(); }
 };
 
+class ContactContext;    // engine/contact/contact_context.h: one FCL model per solid, built once
+struct NearbyTriangles;  // contact_context.h: the triangle pairs that may overlap near a pose
+
 struct DetectOptions {
   // Local distance minima up to this gap are reported in `near` (0: only contacts). At most
   // the context's guaranteed band (ContactContext::guaranteed_band()).
   double near_margin = 0;
+  // When the pose lies within `nearby`'s margin, its overlapping triangle pairs are taken from
+  // these (same result, far cheaper than a BVH query); otherwise the BVHs are queried.
+  const NearbyTriangles* nearby = nullptr;
 };
-
-class ContactContext;  // engine/contact/contact_context.h: one FCL model per solid, built once
 
 // All isolated contacts at the pose, each classified by the elements whose relative interiors
 // hold its two closest points; two separate contacts of the same pair are reported twice.

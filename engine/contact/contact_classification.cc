@@ -1,6 +1,9 @@
 #include "engine/contact/contact_classification.h"
 
+#include <limits>
+
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 namespace pcsg {
@@ -136,11 +139,8 @@ Classification classify_solution(const SceneGeometry& scene, const Pose& X_BA,
   return out;
 }
 
-bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c) {
-  const double L = scene.tol.length_scale;
-  const double flat = scene.tol.curvature;  // 1/length
+double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c) {
   const Eigen::Matrix3d R = X_BA.rotation();
-  const Eigen::Vector3d D = X_BA.apply(c.p_A) - c.p_B;
   const Eigen::Vector3d& n = c.normal_B;
   const double s = c.gap;
   auto face_a = [&] { return scene.A.surfaces[scene.A.faces[c.a.index].surface]; };
@@ -153,18 +153,36 @@ bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointC
       const Eigen::Matrix<double, 3, 2> T = tangent_basis(n);
       const Eigen::Matrix2d KA = shape_form(face_a(), c.p_A, R.transpose() * T);
       const Eigen::Matrix2d KB = shape_form(face_b(), c.p_B, T);
-      return min_eigenvalue(KA + KB * (I + s * KB).inverse()) >= -flat;
+      return min_eigenvalue(KA + KB * (I + s * KB).inverse());
     }
     case PtcType::FE: {
       // Along B's edge: A's normal curvature minus the edge's curvature toward A.
       const Eigen::Vector3d t_A = R.transpose() * c.tangent_b_B;
       const double ka = SurfaceJet::at(face_a(), c.p_A).normal_curvature(t_A);
-      return ka - edge_jet(scene.B, c.b.index, c.p_B).curvature.dot(n) >= -flat;
+      return ka - edge_jet(scene.B, c.b.index, c.p_B).curvature.dot(n);
     }
     case PtcType::EF: {
       const double kb = SurfaceJet::at(face_b(), c.p_B).normal_curvature(c.tangent_a_B);
-      return (R * edge_jet(scene.A, c.a.index, c.p_A).curvature).dot(n) + kb >= -flat;
+      return (R * edge_jet(scene.A, c.a.index, c.p_A).curvature).dot(n) + kb;
     }
+    default:
+      return std::numeric_limits<double>::infinity();
+  }
+}
+
+bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c) {
+  const double L = scene.tol.length_scale;
+  const double flat = scene.tol.curvature;  // 1/length
+  const Eigen::Matrix3d R = X_BA.rotation();
+  const Eigen::Vector3d D = X_BA.apply(c.p_A) - c.p_B;
+  const Eigen::Vector3d& n = c.normal_B;
+  const double s = c.gap;
+  auto face_a = [&] { return scene.A.surfaces[scene.A.faces[c.a.index].surface]; };
+  auto face_b = [&] { return scene.B.surfaces[scene.B.faces[c.b.index].surface]; };
+  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+  switch (c.type) {
+    case PtcType::FF: case PtcType::FE: case PtcType::EF:
+      return sliding_curvature(scene, X_BA, c) >= -flat;
     case PtcType::EECross: {
       // Hessian of |D|^2 / 2 in the two arc lengths.
       const double cross = -c.tangent_a_B.dot(c.tangent_b_B);

@@ -30,6 +30,10 @@ Classification classify_solution(const SceneGeometry& scene, const Pose& X_BA,
 // Second-order test of a solved pair: the relative curvature along the directions the points
 // can slide is positive semi-definite, within Tolerances::curvature.
 bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c);
+// The smallest relative curvature (1/length) along the directions an f-f, f-e or e-f
+// contact's points can slide (infinite for the other types): near zero next to a bifurcation
+// where two local minima of the pair merge.
+double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c);
 
 // Follows redirections from a candidate pair and starting points to a classified solution.
 // e-e pairs are solved as crossing edges first and as touching edges when their tangents are

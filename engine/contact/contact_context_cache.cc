@@ -34,8 +34,10 @@ void add_solid(Fingerprint& f, const Solid& s, const SolidMesh& m) {
   f.add(s.faces.size());
   f.add(s.edges.size());
   f.add(s.vertices.size());
-  for (const Polynomial& g : s.surfaces)
+  for (const Polynomial& g : s.surfaces) {
     for (double c : g.coeffs()) f.add(c);
+    for (int k = 0; k < 3; ++k) f.add(g.origin()[k]);
+  }
   f.add(m.positions.size());
   f.add(m.triangles.size());
   f.add(m.chordal_error);

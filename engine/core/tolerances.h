@@ -36,6 +36,14 @@ struct Tolerances {
   // vertices are discovered before being traced exactly: resolves features >= L / 24, while the
   // smallest the paper's objects have is ~L / 10.
   int discovery_cells = 24;
+  // ... and at least this many cells across the solid's thickness (SolidExtent::thickness),
+  // so that a needle or a thin disc, thinner than L / 24, still has grid vertices inside it
+  // on both sides of each surface (two would do exactly across the middle; four leave room
+  // for the ends, which taper). The paper's objects are thick: L / 24 already gives > 4.
+  int discovery_cells_across = 4;
+  // A discovery grid above this many cells is refused with an error naming the thickness
+  // (~1 s and ~100 MB of samples per surface): a solid thinner than its box by > ~1e3.
+  double discovery_max_cells = 1.6e7;
 
   // --- contact classification ----------------------------------------------------------------
   // |gap| below this counts as touching. Witnesses are projected to ~1e-12 L; 1e-9 L leaves
@@ -69,6 +77,16 @@ struct Tolerances {
   // by their chordal error plus half this band. 1e-3 L (one default chordal error) holds a
   // contact's neighbourhood in a few triangles while covering near-contacts of motion steps.
   double candidate_band = 1e-3;
+  // A contact whose smallest relative curvature along its sliding directions is below this
+  // (1/length) may have a second distance minimum of the same pair in its overlap region
+  // (next to a bifurcation the two merge, and the curvature at each tends to zero), so
+  // detection solves again from the region's far end. Two minima 0.8% of L apart with a
+  // saddle 3.8e-8 L high (scenes/stress/near_matching_curvature.yaml) have 0.021 / L; 0.1 / L
+  // keeps margin, while most contacts are far more curved (the extra solves cost time).
+  // Measured: Example 1 generated and swapped, 52.4 s of CPU without the extra solves,
+  // 55.0 s with them. (Solving again after every saddle too cost ~1.5x and added a duplicate
+  // region of {(fA-e1, 1), (fA-f1, 1)} to Example 1's graph.)
+  double bifurcation_curvature = 0.1;
   // Projection onto a contact formation: largest translation (and rotation times L) of one
   // Gauss-Newton step, 0.05 L, inside the basin of the pair solves; and an iteration cap
   // (quadratic convergence needs < 10 from a motion step away).
@@ -81,6 +99,11 @@ struct Tolerances {
   // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line
   // by ~1e-9 L over a length L, like contact_gap, while round-off is ~1e-14.
   double straight_line_relative = 1e-9;
+  // A solid is a solid of revolution about an axis when each of its polynomials, rotated by a
+  // radian about the axis, changes by less than this times its largest value on a grid over
+  // the solid's box (dimensionless): evaluation round-off is ~1e-15 of that, while a real
+  // asymmetry of 1e-9 moves the surface by ~1e-9 L, the size of contact_gap.
+  double symmetry_relative = 1e-9;
 
   // --- meshes (collision checks and rendering only) ------------------------------------------
   // Default chordal error of the meshes: 1e-3 L keeps a 1280-pixel image within one pixel and
@@ -115,6 +138,7 @@ struct Tolerances {
     t.keep_residual *= L;
     t.rate_step *= L;
     t.curvature /= L;  // a curvature: 1/length
+    t.bifurcation_curvature /= L;
     t.candidate_band *= L;
     t.projection_step *= L;
     t.seed_separation *= L;

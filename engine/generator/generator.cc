@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <set>
+#include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "engine/generator/hypothesis.h"
+#include "engine/generator/state_identity.h"
 
 namespace pcsg {
 
@@ -102,7 +106,8 @@ class Builder {
  public:
   Builder(const SceneGeometry& scene, const GeneratorOptions& options,
           GeneratorListener* listener, const std::atomic<bool>* cancel)
-      : scene_(scene), options_(options), listener_(listener), cancel_(cancel) {
+      : scene_(scene), options_(options), listener_(listener), cancel_(cancel),
+        symmetry_(SceneSymmetry::of(scene)) {
     graph_.scene = scene.spec.name;
   }
 
@@ -110,11 +115,23 @@ class Builder {
 
  private:
   bool cancelled() const { return cancel_ && cancel_->load(); }
-  // The state of this CF whose region holds `pose`, or -1.
-  int find_state(const ContactFormation& cf, const Pose& pose);
+  // The state of this CF whose region holds `pose` (whose exact contacts are `contacts`), or
+  // -1. A witness joined to several states proves them one state (connectivity is
+  // transitive): they are united, and merged when the run ends.
+  int find_state(const ContactFormation& cf, const Pose& pose,
+                 const std::vector<PointContact>& contacts);
+  int representative(int id);
+  // Renumbers the states after the unions of find_state: one state per class (the lowest
+  // id's witness), links and candidates redirected, duplicate links dropped.
+  void merge_united_states();
   int add_state(const ContactFormation& cf, const Pose& pose,
                 const std::vector<PointContact>& contacts, bool seed, int depth);
   void grow(int seed_id);
+  // The hypotheses of a state toward CFs the graph does not have, tried again from each of
+  // its other witnesses (feasibility from one witness is incomplete: a motion that fails
+  // from one point of a region may succeed from another); each new state found is grown.
+  // Repeats until nothing new is found.
+  void retry_from_other_witnesses();
   void add_link(int from, int to, const std::string& motion);
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
@@ -124,21 +141,59 @@ class Builder {
   GeneratorOptions options_;
   GeneratorListener* listener_;
   const std::atomic<bool>* cancel_;
+  SceneSymmetry symmetry_;
   StateGraph graph_;
   MotionCounters counters_;
   std::map<std::pair<int, int>, bool> linked_;
+  // Per state: the witnesses shown to lie in its region (its own first, then those of later
+  // motions that ended there), a roadmap that later witnesses may join at any of its points;
+  // its region signature; its class in the union of states proved to be one.
+  struct Witness {
+    Pose pose;
+    std::vector<PointContact> contacts;
+  };
+  std::vector<std::vector<Witness>> members_;
+  std::vector<RegionSignature> signatures_;
+  // (state, witness, CF) already retried by retry_from_other_witnesses.
+  std::set<std::tuple<int, int, ContactFormation>> retried_;
+  std::vector<int> united_;
   // States of higher cardinality met by motions from state `from`, in merge order.
   std::vector<std::pair<int, Discovery>> discoveries_;
 };
 
-int Builder::find_state(const ContactFormation& cf, const Pose& pose) {
+// Roadmap points kept per state: enough to cover a region from several sides (the witnesses
+// of transitions into it arrive from each neighbouring region), few enough that a failed
+// join costs a bounded number of motions.
+constexpr size_t kMaxMembersPerState = 4;
+
+int Builder::representative(int id) {
+  while (united_[id] != id) id = united_[id] = united_[united_[id]];
+  return id;
+}
+
+int Builder::find_state(const ContactFormation& cf, const Pose& pose,
+                        const std::vector<PointContact>& contacts) {
+  const RegionSignature sig = region_signature(contacts);
+  int found = -1;
   for (const State& s : graph_.states) {
-    if (!(s.cf == cf)) continue;
-    if (connected_within_cf(scene_, s.pose, pose, cf, counters_) ||
-        connected_within_cf(scene_, pose, s.pose, cf, counters_))
-      return s.id;
+    if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
+    // Already known to be the state found: nothing to prove.
+    if (found >= 0 && representative(s.id) == representative(found)) continue;
+    bool joined = false;
+    for (const Witness& m : members_[s.id])
+      if ((joined = joined_within_cf(scene_, m.pose, pose, cf, counters_, symmetry_))) break;
+    if (!joined) continue;
+    if (found < 0) {
+      found = s.id;
+      if (members_[s.id].size() < kMaxMembersPerState)
+        members_[s.id].push_back({pose, contacts});
+    } else {
+      // `pose` joins both: one region, one state.
+      const int r1 = representative(found), r2 = representative(s.id);
+      united_[std::max(r1, r2)] = std::min(r1, r2);
+    }
   }
-  return -1;
+  return found;
 }
 
 int Builder::add_state(const ContactFormation& cf, const Pose& pose,
@@ -151,6 +206,9 @@ int Builder::add_state(const ContactFormation& cf, const Pose& pose,
   s.seed = seed;
   s.depth = depth;
   graph_.states.push_back(s);
+  members_.push_back({{s.pose, s.contacts}});
+  signatures_.push_back(region_signature(contacts));
+  united_.push_back(s.id);
   if (listener_) listener_->on_state(graph_, graph_.states.back());
   return s.id;
 }
@@ -251,7 +309,7 @@ void Builder::grow(int seed_id) {
       counters_.merge(r.counters);
       Candidate& c = r.candidate;
       if (c.feasible) {
-        int to = find_state(c.cf, r.outcome.end);
+        int to = find_state(c.cf, r.outcome.end, r.outcome.contacts);
         if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
           to = add_state(c.cf, r.outcome.end, r.outcome.contacts, false,
                          graph_.states[c.from].depth + 1);
@@ -280,11 +338,82 @@ void Builder::grow(int seed_id) {
   }
 }
 
+void Builder::merge_united_states() {
+  const int n = static_cast<int>(graph_.states.size());
+  std::vector<int> new_id(n, -1);
+  std::vector<State> states;
+  for (int i = 0; i < n; ++i) {
+    const int r = representative(i);
+    if (r == i) {
+      new_id[i] = static_cast<int>(states.size());
+      states.push_back(graph_.states[i]);
+      states.back().id = new_id[i];
+    }
+  }
+  if (static_cast<int>(states.size()) == n) return;
+  for (int i = 0; i < n; ++i) {
+    const int r = representative(i);
+    new_id[i] = new_id[r];
+    State& kept = states[new_id[i]];
+    kept.seed = kept.seed || graph_.states[i].seed;
+    kept.depth = std::min(kept.depth, graph_.states[i].depth);
+  }
+  std::vector<Link> links;
+  std::map<std::tuple<int, int, int>, bool> seen;
+  for (Link l : graph_.links) {
+    l.from = new_id[l.from];
+    l.to = new_id[l.to];
+    if (l.from == l.to) continue;
+    if (seen[{l.from, l.to, static_cast<int>(l.kind)}]) continue;
+    seen[{l.from, l.to, static_cast<int>(l.kind)}] = true;
+    links.push_back(l);
+  }
+  for (Candidate& c : graph_.candidates) {
+    c.from = new_id[c.from];
+    if (c.to >= 0) c.to = new_id[c.to];
+  }
+  graph_.states = std::move(states);
+  graph_.links = std::move(links);
+}
+
+void Builder::retry_from_other_witnesses() {
+  for (bool found_new = true; found_new && !cancelled();) {
+    found_new = false;
+    for (size_t id = 0; id < graph_.states.size() && !cancelled(); ++id) {
+      for (size_t k = 1; k < members_[id].size(); ++k) {
+        State from = graph_.states[id];
+        from.pose = members_[id][k].pose;
+        from.contacts = members_[id][k].contacts;
+        for (const Hypothesis& h : hypothesise_ln(scene_, from.contacts)) {
+          if (!retried_.insert({static_cast<int>(id), static_cast<int>(k), h.cf}).second)
+            continue;
+          if (std::any_of(graph_.states.begin(), graph_.states.end(),
+                          [&](const State& s) { return s.cf == h.cf; }))
+            continue;
+          if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
+          TryResult r = try_hypothesis(scene_, from, h, options_.measure_discretisation);
+          counters_.merge(r.counters);
+          for (Discovery& d : r.discovered)
+            if (adds_one_contact(from.cf, d.cf)) discoveries_.push_back({from.id, std::move(d)});
+          if (!r.candidate.feasible) continue;
+          const int to = add_state(h.cf, r.outcome.end, r.outcome.contacts, false,
+                                   from.depth + 1);
+          r.candidate.to = to;
+          graph_.candidates.push_back(r.candidate);
+          add_link(from.id, to, r.candidate.motion);
+          grow(to);
+          found_new = true;
+        }
+      }
+    }
+  }
+}
+
 StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<SeedCandidate> seeds;
   if (scene_.spec.auto_seeds) {
-    seeds = find_seed_candidates(scene_, counters_);
+    seeds = find_seed_candidates(scene_, counters_, options_.threads);
   } else {
     for (const SeedSpec& s : scene_.spec.seeds) seeds.push_back(seed_from_pose(scene_, s, counters_));
   }
@@ -299,7 +428,7 @@ StateGraph Builder::run() {
         std::any_of(graph_.states.begin(), graph_.states.end(),
                     [&](const State& s) { return s.cf == sc.cf; }))
       continue;
-    const int existing = find_state(sc.cf, sc.pose);
+    const int existing = find_state(sc.cf, sc.pose, sc.contacts);
     if (existing >= 0) {
       if (!scene_.spec.auto_seeds) graph_.states[existing].seed = true;
       continue;
@@ -310,18 +439,28 @@ StateGraph Builder::run() {
   // higher cardinality from below (its GN direction); each such state not yet in the graph
   // seeds an LN graph of its own, linked to the state it was met from. Repeats until none is
   // new, so every local maximum connected to the seeds by neighbouring transitions is found.
-  for (size_t k = 0; k < discoveries_.size() && !cancelled(); ++k) {
-    const auto [from, d] = discoveries_[k];
-    if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
-    int id = find_state(d.cf, d.pose);
-    if (id < 0) {
-      id = add_state(d.cf, d.pose, d.contacts, true, 0);
-      grow(id);
+  // Then the hypotheses toward CFs still missing, from the states' other witnesses; and the
+  // discoveries those motions make, until neither finds anything new.
+  for (size_t k = 0;;) {
+    for (; k < discoveries_.size() && !cancelled(); ++k) {
+      const auto [from, d] = discoveries_[k];
+      if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
+      int id = find_state(d.cf, d.pose, d.contacts);
+      if (id < 0) {
+        id = add_state(d.cf, d.pose, d.contacts, true, 0);
+        grow(id);
+      }
+      // The met state is `from` plus one contact: removing it (the reverse of the motion
+      // that met it) leads back down to `from`, an LN transition.
+      add_link(id, from,
+               "separation (reverse of a motion from state " + std::to_string(from) + ")");
     }
-    // The met state is `from` plus one contact: removing it (the reverse of the motion that
-    // met it) leads back down to `from`, an LN transition.
-    add_link(id, from, "separation (reverse of a motion from state " + std::to_string(from) + ")");
+    const size_t states = graph_.states.size(), found = discoveries_.size();
+    retry_from_other_witnesses();
+    if (cancelled() || (graph_.states.size() == states && discoveries_.size() == found)) break;
   }
+
+  merge_united_states();
 
   graph_.stats.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -341,6 +480,17 @@ StateGraph Builder::run() {
 
 StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& options,
                           GeneratorListener* listener, const std::atomic<bool>* cancel) {
+  if (options.motion_step < 0)
+    throw std::invalid_argument("generate_graph: motion_step must be >= 0, got " +
+                                std::to_string(options.motion_step));
+  const double step = options.motion_step * scene.tol.length_scale;
+  if (options.motion_step > 0 && step != scene.tol.motion_step) {
+    // The motions read the step from the scene's tolerances: run on a copy that has it.
+    SceneGeometry stepped = scene;
+    stepped.tol.motion_step = step;
+    Builder b(stepped, options, listener, cancel);
+    return b.run();
+  }
   Builder b(scene, options, listener, cancel);
   return b.run();
 }

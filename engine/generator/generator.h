@@ -24,6 +24,9 @@ struct GeneratorOptions {
   bool probe_upward = true;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
+  // Length of one small motion step relative to the scene's length scale; 0 keeps the scene's
+  // own (Tolerances::motion_step, 1e-2 L unless changed).
+  double motion_step = 0;
 };
 
 // Progress and results as they are found. Called from the thread that runs generate_graph, in

@@ -1,11 +1,14 @@
 #include "engine/generator/seeds.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 #include <Eigen/Eigenvalues>
 
+#include "engine/contact/contact_context.h"
 #include "engine/core/error.h"
 #include "engine/generator/motion_drive.h"
 
@@ -14,10 +17,13 @@ namespace {
 
 enum class Contactness { Apart, Touching, Penetrating };
 
+// `nearby` (optional): the triangle pairs that may overlap near X (a bisection bracket).
 Contactness classify(const SceneGeometry& scene, const Pose& X, MotionCounters& counters,
-                     ContactReport* out = nullptr) {
+                     ContactReport* out = nullptr, const NearbyTriangles* nearby = nullptr) {
   ++counters.detections;
-  ContactReport rep = detect_contacts(scene, X);
+  DetectOptions options;
+  options.nearby = nearby;
+  ContactReport rep = detect_contacts(*cached_contact_context(scene), X, options);
   const Contactness c = rep.penetrating()        ? Contactness::Penetrating
                         : rep.contacts.empty() ? Contactness::Apart
                                                : Contactness::Touching;
@@ -32,9 +38,14 @@ bool first_touch(const SceneGeometry& scene, PoseAt at, double lo, double hi,
                  MotionCounters& counters, Pose& touch, ContactReport& rep) {
   // 60 halvings take any bracket of size <= 1e3 L below 1e-15 L.
   constexpr int kMaxBisections = 60;
+  // The bracket is a straight motion: its middle's neighbourhood of half its length covers it.
+  constexpr double kStraightBracket = 1.0;
+  const auto context = cached_contact_context(scene);
+  BracketTriangles bracket(*context, kStraightBracket);
   for (int k = 0; k < kMaxBisections; ++k) {
+    const NearbyTriangles* nearby = bracket.update(at(lo), at(hi));
     const double mid = 0.5 * (lo + hi);
-    const Contactness c = classify(scene, at(mid), counters, &rep);
+    const Contactness c = classify(scene, at(mid), counters, &rep, nearby);
     if (c == Contactness::Touching) {
       touch = at(mid);
       return true;
@@ -165,7 +176,7 @@ Eigen::Matrix3d principal_frame(const SolidMesh& mesh, const Eigen::Vector3d& ce
 }  // namespace
 
 std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
-                                                MotionCounters& counters) {
+                                                MotionCounters& counters, int threads) {
   // Push directions: the six axes and the eight diagonals; orientations: A as given and turned
   // a quarter about x and about y, so each of A's principal directions meets B at least once.
   std::vector<Eigen::Vector3d> dirs;
@@ -188,9 +199,16 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
   const Eigen::Matrix3d R_A = principal_frame(scene.mesh_A, scene.A.bbox.center());
   for (Eigen::Vector3d& d : dirs) d = R_B * d;
   const double reach = scene.B.bbox.diagonal().norm() / 2 + scene.A.bbox.diagonal().norm() / 2;
-  std::vector<SeedCandidate> out;
-  for (const Eigen::Vector3d& d : dirs)
-    for (const Eigen::Quaterniond& q : turns) {
+  // One job per direction and turn, each a pure function of the scene: run on `threads`
+  // threads and gathered in job order, so the candidates do not depend on the thread count.
+  const size_t jobs = dirs.size() * turns.size();
+  std::vector<std::optional<SeedCandidate>> found(jobs);
+  std::vector<MotionCounters> job_counters(jobs);
+  auto run_job = [&](size_t job) {
+    const Eigen::Vector3d& d = dirs[job / turns.size()];
+    const Eigen::Quaterniond& q = turns[job % turns.size()];
+    MotionCounters& counters = job_counters[job];
+    {
       // A starts outside B along d and moves toward B's centre until it first touches.
       auto at = [&](double t) {
         Pose X;
@@ -200,7 +218,7 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
         return X;
       };
       ContactReport rep;
-      if (classify(scene, at(0.0), counters) != Contactness::Apart) continue;
+      if (classify(scene, at(0.0), counters) != Contactness::Apart) return;
       // March in steps of the motion step (relative to the reach) until not apart.
       const double dt = scene.tol.motion_step / reach;
       double t = 0;
@@ -212,11 +230,24 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
       Pose touch = at(t);
       if (c == Contactness::Penetrating &&
           !first_touch(scene, at, t - dt, t, counters, touch, rep))
-        continue;
-      if (c == Contactness::Apart) continue;
-      auto cand = settle(scene, touch, rep, d, counters);
-      if (cand) out.push_back(std::move(*cand));
+        return;
+      if (c == Contactness::Apart) return;
+      found[job] = settle(scene, touch, rep, d, counters);
     }
+  };
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t job; (job = next.fetch_add(1)) < jobs;) run_job(job);
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min<int>(threads, static_cast<int>(jobs)); ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  std::vector<SeedCandidate> out;
+  for (size_t job = 0; job < jobs; ++job) {
+    counters.merge(job_counters[job]);
+    if (found[job]) out.push_back(std::move(*found[job]));
+  }
   std::stable_sort(out.begin(), out.end(), [](const SeedCandidate& a, const SeedCandidate& b) {
     if (a.cf.cardinality() != b.cf.cardinality()) return a.cf.cardinality() > b.cf.cardinality();
     return a.cf < b.cf;

@@ -19,9 +19,10 @@ struct SeedCandidate {
 };
 
 // Candidates sorted by cardinality (highest first), then by CF; one per distinct CF and pose
-// region is not guaranteed (the generator merges them).
+// region is not guaranteed (the generator merges them). The pushes run on `threads` threads;
+// the result does not depend on their number.
 std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
-                                                MotionCounters& counters);
+                                                MotionCounters& counters, int threads = 1);
 
 // A listed seed pose, projected onto the CF it touches in. Throws SceneError (the seed's place
 // in the scene file) when it penetrates or touches nothing.

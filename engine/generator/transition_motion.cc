@@ -4,8 +4,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "engine/generator/motion_drive.h"
+#include "engine/contact/contact_context.h"
 #include "engine/contact/contact_formation.h"
+#include "engine/generator/motion_drive.h"
 
 namespace pcsg {
 namespace {
@@ -42,6 +43,10 @@ constexpr double kMatchSteps = 3.0;
 // kMaxStalledSteps steps is not going to arrive this way (a drive circling or blocked).
 constexpr double kMinProgress = 0.01;
 constexpr int kMaxStalledSteps = 20;
+// The triangle pairs gathered for an event's bracket cover poses this many times farther from
+// its middle than the bracket's ends: the corrected poses tried by bisection stray from the
+// straight step by second-order amounts only (a pose outside is queried in full).
+constexpr double kBracketMargin = 1.25;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
@@ -75,7 +80,8 @@ class Motion {
          const ContactFormation& target, const MotionVariant& variant, MotionCounters& counters,
          const MotionObserver& observer)
       : scene_(scene), tracks_(std::move(tracks)), target_(target), variant_(variant),
-        counters_(counters), observer_(observer), X_(start) {
+        counters_(counters), observer_(observer), X_(start),
+        context_(cached_contact_context(scene)) {
     h_ = scene.tol.motion_step;
     size_ = std::max(scene.A.bbox.diagonal().norm() / 2, scene.tol.length_scale * 1e-3);
     max_steps_ = static_cast<int>(kMaxTravelSizes * size_ / h_) + 10 * kSettleSteps;
@@ -101,7 +107,10 @@ class Motion {
   // pair solve failed (its point left its element), or is -1 when Newton did not converge.
   std::optional<Pose> correct(Pose Y, std::vector<Track>& tracks, int* lost = nullptr) const;
 
-  Observation classify(const Pose& Y, const std::vector<Track>& tracks) const;
+  // `nearby` (optional) holds the triangle pairs that may overlap near Y (bisection brackets).
+  Observation classify(const Pose& Y, const std::vector<Track>& tracks,
+                       const NearbyTriangles* nearby = nullptr) const;
+
   bool add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys);
   void add_edge_rotation(const Track& t, const TwistFrame& F,
                          const Eigen::Matrix<double, 3, 6>& dn, const Eigen::Vector3d& dir,
@@ -134,6 +143,7 @@ class Motion {
   MotionCounters& counters_;
   const MotionObserver& observer_;
   Pose X_;
+  std::shared_ptr<const ContactContext> context_;
   double h_ = 0, size_ = 1;
   int max_steps_ = 0, step_ = 0;
   bool used_rotation_drive_ = false;
@@ -251,10 +261,13 @@ std::optional<Pose> Motion::correct(Pose Y, std::vector<Track>& tracks, int* los
   return std::nullopt;
 }
 
-Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks) const {
+Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
+                             const NearbyTriangles* nearby) const {
   Observation obs;
   ++counters_.detections;
-  const ContactReport rep = detect_contacts(scene_, Y);
+  DetectOptions options;
+  options.nearby = nearby;
+  const ContactReport rep = detect_contacts(*context_, Y, options);
   obs.contacts = rep.contacts;
   if (rep.penetrating()) {
     const Penetration& p = rep.penetrations.front();
@@ -474,7 +487,9 @@ MotionOutcome Motion::run() {
       double lo = 0, hi = frac;
       Pose Y_hi = *Y, Y_lo = X_;
       std::vector<Track> tracks_hi = moved, tracks_lo = tracks_;
+      BracketTriangles bracket(*context_, kBracketMargin);
       for (int k = 0; k < kBisections; ++k) {
+        const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
         const double mid = 0.5 * (lo + hi);
         std::vector<Track> tm = tracks_;
         auto Ym = correct(F.apply(X_, *s * mid), tm);
@@ -482,7 +497,7 @@ MotionOutcome Motion::run() {
           hi = mid;
           continue;
         }
-        Observation om = classify(*Ym, tm);
+        Observation om = classify(*Ym, tm, nearby);
         if (om.kind == Observation::Same) {
           lo = mid;
           Y_lo = *Ym;
@@ -757,8 +772,10 @@ std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFram
     if (obs.kind != Observation::Collision) return std::nullopt;
     // Locate the first touch of the new contact between X_ and Y.
     double lo = 0, hi = 1;
-    Pose Y_hi = *Y;
+    Pose Y_hi = *Y, Y_lo = X_;
+    BracketTriangles bracket(*context_, kBracketMargin);
     for (int k = 0; k < kBisections; ++k) {
+      const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
       const double mid = 0.5 * (lo + hi);
       std::vector<Track> tm = tracks_;
       auto Ym = correct(F.apply(X_, *s * mid), tm);
@@ -766,9 +783,10 @@ std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFram
         hi = mid;
         continue;
       }
-      Observation om = classify(*Ym, tm);
+      Observation om = classify(*Ym, tm, nearby);
       if (om.kind == Observation::Same) {
         lo = mid;
+        Y_lo = *Ym;
       } else {
         hi = mid;
         Y_hi = *Ym;

@@ -1,6 +1,7 @@
 #include "engine/geometry/brep_builder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -22,6 +23,12 @@ constexpr double kMinComponentArea = 1e-6;
 std::string point_str(const Eigen::Vector3d& p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+  return buf;
+}
+
+std::string num_str(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
 }
 
@@ -196,23 +203,53 @@ Solid build_solid(const ObjectSpec& object, std::vector<std::string>* warnings) 
     solid.surfaces.push_back(f.g);
     solid.surface_names.push_back(f.name);
   }
-  const Eigen::AlignedBox3d box = solid_box_estimate(object);
+  const SolidExtent extent = solid_extent(object);
+  const Eigen::AlignedBox3d& box = extent.box;
+  // Every surface expanded about a point near the solid (Polynomial::origin): a solid far
+  // from its frame's origin is then evaluated without cancellation. Measured on Example 1's
+  // B moved 1.32e5 (1e4 L) away (scenes/stress/example1_far_rotated.yaml): g near the surface
+  // had round-off ~4e-6 from terms of 1.7e10 (a distance error ~5e-7, 4e-8 L, against
+  // solve_residual 1e-12 L), and edge tracing failed; about the new origin g's terms are ~16.
+  // The origin is the box's centre rounded to a multiple of its diagonal, so a solid around
+  // its frame's origin keeps origin zero and its coefficients exactly.
+  {
+    const double D = box.diagonal().norm();
+    const Eigen::Vector3d o = (box.center() / D).array().round().matrix() * D;
+    if (!o.isZero())
+      for (Polynomial& g : solid.surfaces) g = g.recentred(o);
+  }
   // the object's own tolerances: its B-rep does not depend on the other object
   Builder b{object, solid, Tolerances::for_length_scale(box.diagonal().norm()), 0.0, {}};
-  b.h = box.sizes().maxCoeff() / b.tol.discovery_cells;
+  // the grid: discovery_cells along the box's longest side, finer for a thin solid (a
+  // needle 1:1:100, scenes/stress/needle_in_dish.yaml, fell between the grid's vertices)
+  b.h = std::min(box.sizes().maxCoeff() / b.tol.discovery_cells,
+                 extent.thickness / b.tol.discovery_cells_across);
+  {
+    double cells = 1;
+    for (int a = 0; a < 3; ++a) cells *= std::ceil(box.sizes()[a] / b.h) + 1;
+    if (cells > b.tol.discovery_max_cells)
+      throw SceneError(object.where,
+                       "object " + object.name + " is too thin to discover: " +
+                           num_str(extent.thickness) + " thick in a box of " +
+                           num_str(box.sizes().x()) + " x " + num_str(box.sizes().y()) +
+                           " x " + num_str(box.sizes().z()) + ", it needs a grid of " +
+                           num_str(cells) + " cells (at most " +
+                           num_str(b.tol.discovery_max_cells) + ")");
+  }
   b.discover_faces(box);
   if (solid.faces.empty())
     throw SceneError(object.where, "object " + object.name +
                                        " is empty: its inequalities leave no face on a grid "
-                                       "of " + std::to_string(b.tol.discovery_cells) +
-                                       " cells across its box (it has no interior, or is "
-                                       "thinner than a cell)");
+                                       "of cells " + num_str(b.h) + " wide across its box (it "
+                                       "has no interior, or a part thinner than a cell)");
   std::vector<TracedCurve> curves;
   std::vector<std::pair<int, int>> pairs;
   b.trace_edges(&curves, &pairs);
   b.make_edges(curves, pairs);
   name_and_link_elements(solid, object);
-  compute_face_extents(solid, 3 * b.h, b.tol);
+  // extremes are searched within three coarse cells of the grid's samples (a thin solid's
+  // finer grid still misses its tapering ends: a needle's last 0.065 of 2.5)
+  compute_face_extents(solid, 3 * box.sizes().maxCoeff() / b.tol.discovery_cells, b.tol);
   for (const auto& f : solid.faces) solid.bbox.extend(f.bbox);
   // inequalities that shape nothing: harmless, but likely not what the author meant
   for (int i = 0; i < b.n(); ++i) {

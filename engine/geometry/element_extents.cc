@@ -19,7 +19,10 @@ constexpr int kExtremeIterations = 30;
 constexpr std::size_t kSampleSubset = 500;
 
 // Solves F(p) = 0 from `start` by Newton with the 3x3 Jacobian J(p); false when J is singular
-// (a whole curve of extremes, e.g. a horizontal circle's z) or it does not converge.
+// (a whole curve of extremes, e.g. a horizontal circle's z) or it does not converge. The
+// systems scale each row (F_i and J's row i alike) to a length at the current point: the
+// Newton step is unchanged, but the LU's pivots and invertibility test no longer see the
+// inequalities' arbitrary scales (a face written 1e8 times over, scenes/stress/).
 template <class System>
 bool newton3(System system, Eigen::Vector3d* p, double residual_tol) {
   for (int it = 0; it < kExtremeIterations; ++it) {
@@ -65,12 +68,12 @@ Eigen::AlignedBox3d edge_bbox(const std::vector<Polynomial>& gs, const Edge& edg
         Eigen::Matrix3d Ha, Hb;
         ga.evaluate(p, &va, &a, &Ha);
         gb.evaluate(p, &vb, &b, &Hb);
-        *F << va, vb, e.dot(a.cross(b));
-        J->row(0) = a.transpose();
-        J->row(1) = b.transpose();
-        J->row(2) = (Ha * b.cross(e) + Hb * e.cross(a)).transpose();
-        return std::max({std::abs(va) / a.norm(), std::abs(vb) / b.norm(),
-                         std::abs((*F)[2]) / (a.norm() * b.norm()) * tol.length_scale});
+        const double na = a.norm(), nb = b.norm(), nab = na * nb / tol.length_scale;
+        *F << va / na, vb / nb, e.dot(a.cross(b)) / nab;
+        J->row(0) = a.transpose() / na;
+        J->row(1) = b.transpose() / nb;
+        J->row(2) = (Ha * b.cross(e) + Hb * e.cross(a)).transpose() / nab;
+        return F->cwiseAbs().maxCoeff();
       };
       Eigen::Vector3d p = edge.samples[m].point;
       if (!newton3(system, &p, tol.solve_residual)) continue;
@@ -100,13 +103,12 @@ void compute_face_extents(Solid& solid, double search_radius, const Tolerances& 
           Eigen::Vector3d grad;
           Eigen::Matrix3d H;
           g.evaluate(p, &val, &grad, &H);
-          *F << val, grad[u], grad[v];
-          J->row(0) = grad.transpose();
-          J->row(1) = H.row(u);
-          J->row(2) = H.row(v);
-          const double gn = grad.norm();
-          return std::max(std::abs(val) / gn, std::hypot(grad[u], grad[v]) / gn *
-                                                  tol.length_scale);
+          const double gn = grad.norm(), gl = gn / tol.length_scale;
+          *F << val / gn, grad[u] / gl, grad[v] / gl;
+          J->row(0) = grad.transpose() / gn;
+          J->row(1) = H.row(u) / gl;
+          J->row(2) = H.row(v) / gl;
+          return std::max(std::abs((*F)[0]), std::hypot((*F)[1], (*F)[2]));
         };
         Eigen::Vector3d p = face.samples[m];
         if (!newton3(system, &p, tol.solve_residual)) continue;

@@ -35,7 +35,8 @@ std::vector<double> sample_on_grid(const Polynomial& g, const Grid& grid) {
   const int d = Polynomial::kMaxDegree;
   for (int j = 0; j <= grid.cells.y(); ++j)
     for (int i = 0; i <= grid.cells.x(); ++i) {
-      const Eigen::Vector3d p = grid.point(i, j, 0);
+      // in the polynomial's own expansion coordinates (Polynomial::origin)
+      const Eigen::Vector3d p = grid.point(i, j, 0) - g.origin();
       // collapse x and y: g(x, y, z) = sum_k c_k z^k on this column
       std::array<double, Polynomial::kMaxDegree + 1> c{};
       double xp[d + 1], yp[d + 1];
@@ -51,7 +52,7 @@ std::vector<double> sample_on_grid(const Polynomial& g, const Grid& grid) {
         c[e[2]] += coef * xp[e[0]] * yp[e[1]];
       }
       for (int k = 0; k <= grid.cells.z(); ++k) {
-        const double z = grid.origin.z() + grid.h * k;
+        const double z = grid.origin.z() + grid.h * k - g.origin().z();
         double v = 0;
         for (int e = d; e >= 0; --e) v = v * z + c[e];
         out[grid.index(i, j, k)] = v;

@@ -82,10 +82,14 @@ std::vector<double> face_areas(const Solid& solid, const SolidMesh& mesh) {
         Eigen::Matrix<double, 2, 3> J;
         Eigen::Vector2d r;
         Eigen::Vector3d grad;
+        // rows divided by the gradients' norms: J J^T stays ~1 whatever the inequalities'
+        // scales (surface.h, project_onto_curve)
         for (int k = 0; k < 2; ++k) {
           solid.surfaces[k ? solid.edges[e].surface2 : solid.edges[e].surface1].evaluate(
               m, &r[k], &grad, nullptr);
-          J.row(k) = grad.transpose();
+          const double n = grad.norm();
+          r[k] /= n;
+          J.row(k) = grad.transpose() / n;
         }
         m -= J.transpose() * (J * J.transpose()).ldlt().solve(r);
       } else {

@@ -61,7 +61,12 @@ struct Mesher {
       double h = face.max_curvature > 0
                      ? std::sqrt(8 * chordal_error / face.max_curvature) / kCellDiagonal
                      : extent;
-      h = std::clamp(h, extent / kMaxCellsPerFace, extent / kMinCellsPerFace);
+      // (the finest cell bounded along the box's longest side, or across its thinnest when
+      // the face is slender: a needle's face 1:1:100, scenes/stress/needle_in_dish.yaml, was
+      // otherwise meshed with cells as wide as the needle)
+      const double finest =
+          std::min(extent / kMaxCellsPerFace, face.bbox.sizes().minCoeff() / kMinCellsPerFace);
+      h = std::clamp(h, finest, extent / kMinCellsPerFace);
       spacing[f] = h;
       patches[f] = surface_patch(solid.surfaces, face.surface, face.bbox, h, tol);
       // a surface with several patches: keep the triangles of this one

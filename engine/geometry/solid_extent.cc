@@ -142,7 +142,8 @@ struct Extent {
     return out;
   }
 
-  Eigen::AlignedBox3d run() const {
+  // The box; `thickness` as SolidExtent::thickness.
+  Eigen::AlignedBox3d run(double* thickness) const {
     const std::vector<Eigen::Vector3d> dirs = sphere_directions();
     // (1) a direction where every top-degree part is negative: a ray that ends inside
     std::vector<double> m(dirs.size());
@@ -167,7 +168,9 @@ struct Extent {
     // cast rays: inside intervals give exact boundary points and points inside the solid
     std::vector<Eigen::Vector3d> hits, inner;
     std::vector<double> dist;
-    for (const auto& o : origins)
+    double deepest = 0;  // largest over inside origins of the shortest exit
+    for (const auto& o : origins) {
+      double exit = std::numeric_limits<double>::infinity();
       for (const auto& d : dirs)
         for (const auto& [t0, t1] : inside_intervals(o, d)) {
           if (!std::isfinite(t1)) unbounded(d, "a ray from " + vec_str(o) + " ends inside");
@@ -176,7 +179,26 @@ struct Extent {
           hits.push_back(o + t1 * d);
           inner.push_back(o + 0.5 * (t0 + t1) * d);
           dist.push_back(t1);
+          if (t0 == 0) exit = std::min(exit, t1);
         }
+      if (std::isfinite(exit) && inside(gs, o)) deepest = std::max(deepest, exit);
+    }
+    // the chords' midpoints' centroid: central in a convex solid, where the frame's origin
+    // and the surfaces' centres can lie on the boundary (three spheres through each other's
+    // centres)
+    if (!inner.empty()) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& p : inner) centre += p;
+      centre /= static_cast<double>(inner.size());
+      if (inside(gs, centre)) {
+        double exit = std::numeric_limits<double>::infinity();
+        for (const auto& d : dirs)
+          for (const auto& [t0, t1] : inside_intervals(centre, d))
+            if (t0 == 0) exit = std::min(exit, t1);
+        if (std::isfinite(exit)) deepest = std::max(deepest, exit);
+      }
+    }
+    *thickness = deepest > 0 ? 2 * deepest : std::numeric_limits<double>::infinity();
     if (inner.empty())
       throw SceneError(object.where, "object " + object.name +
                                          " is empty: no point satisfies all of its "
@@ -238,6 +260,10 @@ struct Extent {
 }  // namespace
 
 Eigen::AlignedBox3d solid_box_estimate(const ObjectSpec& object) {
+  return solid_extent(object).box;
+}
+
+SolidExtent solid_extent(const ObjectSpec& object) {
   Extent e{object, {}, {}};
   for (const auto& f : object.faces) {
     const int deg = f.g.degree();
@@ -257,7 +283,9 @@ Eigen::AlignedBox3d solid_box_estimate(const ObjectSpec& object) {
     throw SceneError(object.where, "object " + object.name +
                                        " has no non-constant inequality: it is all of space, "
                                        "which is unbounded");
-  return e.run();
+  SolidExtent out;
+  out.box = e.run(&out.thickness);
+  return out;
 }
 
 }  // namespace pcsg

@@ -19,4 +19,15 @@ namespace pcsg {
 // solid still crosses its boundary.
 Eigen::AlignedBox3d solid_box_estimate(const ObjectSpec& object);
 
+// The box and an estimate of the solid's thickness: twice the largest distance to the
+// boundary seen from the ray origins inside the solid (its frame's origin and its surfaces'
+// centres), each measured as the shortest exit along the sampled directions. A needle of
+// radius r gives ~2r; the box alone would give its length. Infinite when no ray origin lies
+// inside the solid.
+struct SolidExtent {
+  Eigen::AlignedBox3d box;
+  double thickness = 0;
+};
+SolidExtent solid_extent(const ObjectSpec& object);
+
 }  // namespace pcsg

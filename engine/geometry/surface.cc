@@ -130,18 +130,23 @@ Projection project_onto_curve(const Polynomial& g1, const Polynomial& g2,
                               const Eigen::Vector3d& start, const Tolerances& tol) {
   Projection r;
   r.point = start;
+  // Each row divided by its gradient's norm: the residuals become first-order distances and
+  // J's rows unit normals, so J J^T = [1 c; c 1] (c the normals' cosine) whatever the
+  // inequalities' scales. Unnormalised, two faces written 1e8 and 1e-8 times their natural
+  // scale (scenes/stress/example1_ill_scaled.yaml) gave J J^T eigenvalues 1e32 apart, the
+  // small one fell below kPseudoInverseCut and the step never moved toward the small face.
   auto evaluate = [&](const Eigen::Vector3d& p, Eigen::Vector2d& res,
                       Eigen::Matrix<double, 2, 3>& J) {
     double v1 = 0, v2 = 0;
     Eigen::Vector3d a, b;
     g1.evaluate(p, &v1, &a, nullptr);
     g2.evaluate(p, &v2, &b, nullptr);
-    res << v1, v2;
-    J.row(0) = a.transpose();
-    J.row(1) = b.transpose();
     const double na = a.norm(), nb = b.norm();
     if (na == 0 || nb == 0) return kInf;
-    return std::max(std::abs(v1) / na, std::abs(v2) / nb);
+    res << v1 / na, v2 / nb;
+    J.row(0) = a.transpose() / na;
+    J.row(1) = b.transpose() / nb;
+    return res.cwiseAbs().maxCoeff();
   };
   Eigen::Vector2d res;
   Eigen::Matrix<double, 2, 3> J;
@@ -183,6 +188,8 @@ Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2,
   Projection r;
   r.point = start;
   for (; r.iterations <= tol.solve_max_iterations; ++r.iterations) {
+    // rows divided by their gradients' norms (as in project_onto_curve): the LU's pivoting
+    // and invertibility test then compare unit normals, not the inequalities' scales
     Eigen::Vector3d res;
     Eigen::Matrix3d J;
     r.residual = 0;
@@ -190,10 +197,11 @@ Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2,
       double v = 0;
       Eigen::Vector3d grad;
       gs[k]->evaluate(r.point, &v, &grad, nullptr);
-      res[k] = v;
-      J.row(k) = grad.transpose();
       const double n = grad.norm();
-      r.residual = std::max(r.residual, n > 0 ? std::abs(v) / n : kInf);
+      if (n == 0) return r;  // a singular point of one surface
+      res[k] = v / n;
+      J.row(k) = grad.transpose() / n;
+      r.residual = std::max(r.residual, std::abs(res[k]));
     }
     if (r.residual <= tol.solve_residual) {
       r.converged = true;

@@ -67,14 +67,53 @@ double Polynomial::max_abs_coeff() const {
   return m;
 }
 
-Polynomial Polynomial::operator+(const Polynomial& o) const {
+void Polynomial::require_same_origin(const Polynomial& o) const {
+  if (origin_ != o.origin_)
+    throw std::invalid_argument("polynomials expanded about different origins cannot be "
+                                "combined; recentre one first");
+}
+
+Polynomial Polynomial::recentred(const Eigen::Vector3d& o) const {
+  // g(p) = sum_n c_n (p - o_old)^e_n with p - o_old = q + d, q = p - o, d = o - o_old:
+  // expand each power binomially, sum in long double (64-bit mantissa on x86) and round once
+  const Eigen::Vector3d d = o - origin_;
+  long double acc[kNumCoeffs] = {};
+  long double dp[3][kMaxDegree + 1];
+  for (int a = 0; a < 3; ++a) {
+    dp[a][0] = 1;
+    for (int e = 1; e <= kMaxDegree; ++e) dp[a][e] = dp[a][e - 1] * static_cast<long double>(d[a]);
+  }
+  static constexpr long double kBinomial[kMaxDegree + 1][kMaxDegree + 1] = {
+      {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+  const auto& t = table();
+  for (int n = 0; n < kNumCoeffs; ++n) {
+    if (coeffs_[n] == 0.0) continue;
+    const auto& e = t.exps[n];
+    for (int i = 0; i <= e[0]; ++i)
+      for (int j = 0; j <= e[1]; ++j)
+        for (int k = 0; k <= e[2]; ++k)
+          acc[index(i, j, k)] += static_cast<long double>(coeffs_[n]) * kBinomial[e[0]][i] *
+                                 dp[0][e[0] - i] * kBinomial[e[1]][j] * dp[1][e[1] - j] *
+                                 kBinomial[e[2]][k] * dp[2][e[2] - k];
+  }
   Polynomial r;
+  for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = static_cast<double>(acc[n]);
+  r.origin_ = o;
+  return r;
+}
+
+Polynomial Polynomial::operator+(const Polynomial& o) const {
+  require_same_origin(o);
+  Polynomial r;
+  r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] + o.coeffs_[n];
   return r;
 }
 
 Polynomial Polynomial::operator-(const Polynomial& o) const {
+  require_same_origin(o);
   Polynomial r;
+  r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] - o.coeffs_[n];
   return r;
 }
@@ -83,13 +122,19 @@ Polynomial Polynomial::operator-() const { return *this * -1.0; }
 
 Polynomial Polynomial::operator*(double s) const {
   Polynomial r;
+  r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] * s;
   return r;
 }
 
 Polynomial Polynomial::operator*(const Polynomial& o) const {
+  require_same_origin(o);
   const int da = degree(), db = o.degree();
-  if (da < 0 || db < 0) return Polynomial();
+  if (da < 0 || db < 0) {
+    Polynomial zero;
+    zero.origin_ = origin_;
+    return zero;
+  }
   if (da + db > kMaxDegree)
     throw std::domain_error("degree " + std::to_string(da + db) + " exceeds the maximum " +
                             std::to_string(kMaxDegree));
@@ -104,6 +149,7 @@ Polynomial Polynomial::operator*(const Polynomial& o) const {
       r.coeffs_[index(i, j, k)] += coeffs_[a] * o.coeffs_[b];
     }
   }
+  r.origin_ = origin_;
   return r;
 }
 
@@ -114,17 +160,20 @@ Polynomial Polynomial::pow(int n) const {
     throw std::domain_error("degree " + std::to_string(d * n) + " exceeds the maximum " +
                             std::to_string(kMaxDegree));
   Polynomial r = constant(1.0);
+  r.origin_ = origin_;
   for (int k = 0; k < n; ++k) r = r * *this;
   return r;
 }
 
 void Polynomial::evaluate(const Eigen::Vector3d& p, double* value, Eigen::Vector3d* gradient,
                           Eigen::Matrix3d* hessian) const {
-  // Powers p^0..p^4 of each coordinate; derivative of x^i is i x^(i-1), second i(i-1) x^(i-2).
+  // Powers q^0..q^4 of each coordinate of q = p - origin; derivative of x^i is i x^(i-1),
+  // second i(i-1) x^(i-2).
   double pw[3][kMaxDegree + 1];
   for (int a = 0; a < 3; ++a) {
     pw[a][0] = 1.0;
-    for (int e = 1; e <= kMaxDegree; ++e) pw[a][e] = pw[a][e - 1] * p[a];
+    const double q = p[a] - origin_[a];
+    for (int e = 1; e <= kMaxDegree; ++e) pw[a][e] = pw[a][e - 1] * q;
   }
   auto P = [&](int a, int e) { return e < 0 ? 0.0 : pw[a][e]; };
   double v = 0;
@@ -186,6 +235,7 @@ Eigen::Matrix3d Polynomial::hessian(const Eigen::Vector3d& p) const {
 std::array<double, 5> Polynomial::along_line(const Eigen::Vector3d& p,
                                              const Eigen::Vector3d& d) const {
   // Substitute x = p + t d: each coordinate is a degree-1 polynomial in t; multiply out.
+  const Eigen::Vector3d q = p - origin_;
   std::array<double, 5> out{};
   const auto& tb = table();
   for (int n = 0; n < kNumCoeffs; ++n) {
@@ -198,7 +248,7 @@ std::array<double, 5> Polynomial::along_line(const Eigen::Vector3d& p,
       for (int e = 0; e < tb.exps[n][a]; ++e) {
         // acc *= (p[a] + d[a] t)
         for (int k = deg + 1; k >= 0; --k)
-          acc[k] = acc[k] * p[a] + (k > 0 ? acc[k - 1] * d[a] : 0.0);
+          acc[k] = acc[k] * q[a] + (k > 0 ? acc[k - 1] * d[a] : 0.0);
         ++deg;
       }
     for (int k = 0; k < 5; ++k) out[k] += acc[k];
@@ -207,9 +257,10 @@ std::array<double, 5> Polynomial::along_line(const Eigen::Vector3d& p,
 }
 
 Polynomial Polynomial::substituted(const Eigen::Matrix3d& M, const Eigen::Vector3d& c) const {
+  // h(x) = sum_n c_n (M x + c - origin)^e_n
   Polynomial lin[3];
   for (int a = 0; a < 3; ++a) {
-    lin[a] = constant(c[a]);
+    lin[a] = constant(c[a] - origin_[a]);
     for (int b = 0; b < 3; ++b) lin[a] = lin[a] + variable(b) * M(a, b);
   }
   Polynomial r;
@@ -224,6 +275,7 @@ Polynomial Polynomial::substituted(const Eigen::Matrix3d& M, const Eigen::Vector
 
 Polynomial Polynomial::homogeneous_part(int d) const {
   Polynomial r;
+  r.origin_ = origin_;
   const auto& t = table();
   for (int n = 0; n < kNumCoeffs; ++n)
     if (t.exps[n][0] + t.exps[n][1] + t.exps[n][2] == d) r.coeffs_[n] = coeffs_[n];
@@ -256,7 +308,14 @@ std::string Polynomial::str() const {
         if (e[k] > 1) s += "^" + std::to_string(e[k]);
       }
     }
-  return s.empty() ? "0" : s;
+  if (s.empty()) s = "0";
+  if (!origin_.isZero()) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " about (%.17g, %.17g, %.17g)", origin_.x(), origin_.y(),
+                  origin_.z());
+    s += buf;
+  }
+  return s;
 }
 
 }  // namespace pcsg

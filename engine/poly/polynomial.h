@@ -2,6 +2,12 @@
 // A trivariate polynomial of total degree <= 4, stored densely (35 coefficients), with exact
 // value, gradient and Hessian. Faces are given as g(p) <= 0 (the solid side), g(p) = 0 on the
 // face's surface.
+//
+// The coefficients are those of the expansion about an origin o (zero unless `recentred`):
+// g(p) = sum_n c_n (p - o)^e_n. A surface far from the frame's origin (a scene whose B sits
+// 1e4 sizes away) has expanded coefficients ~|p|^d while g ~ 1 near it, so evaluating them
+// at p cancels ~d log10(|p| / size) digits; expanded about a point near the surface the same
+// function is evaluated from coordinates of the surface's own size, without cancellation.
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -22,9 +28,16 @@ class Polynomial {
   // Exponents of coefficient `idx`.
   static std::array<int, 3> exponents(int idx);
 
+  // Coefficients about origin().
   double coeff(int i, int j, int k) const { return coeffs_[index(i, j, k)]; }
   void set_coeff(int i, int j, int k, double c) { coeffs_[index(i, j, k)] = c; }
   const std::array<double, kNumCoeffs>& coeffs() const { return coeffs_; }
+  // The expansion point of the coefficients (zero unless recentred).
+  const Eigen::Vector3d& origin() const { return origin_; }
+  // The same function expanded about `o`: the new coefficients are the Taylor coefficients
+  // at o, accumulated in extended precision and rounded once, so they are as exact as the
+  // data allow. Evaluation near o is then free of the cancellation of a far expansion.
+  Polynomial recentred(const Eigen::Vector3d& o) const;
 
   // Highest total degree with a non-zero coefficient; -1 for the zero polynomial.
   int degree() const;
@@ -32,6 +45,8 @@ class Polynomial {
   // Largest |coefficient|.
   double max_abs_coeff() const;
 
+  // Sums and products need both operands expanded about the same origin (they throw
+  // std::invalid_argument otherwise; parsed polynomials all have origin zero).
   Polynomial operator+(const Polynomial& o) const;
   Polynomial operator-(const Polynomial& o) const;
   Polynomial operator-() const;
@@ -51,16 +66,21 @@ class Polynomial {
   std::array<double, 5> along_line(const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
 
   // h(x) = g(M x + c): the same surface seen through an affine change of coordinates. For a
-  // rigid motion X (x_new = R x_old + t) pass M = R^T, c = -R^T t.
+  // rigid motion X (x_new = R x_old + t) pass M = R^T, c = -R^T t. The result has origin zero.
   Polynomial substituted(const Eigen::Matrix3d& M, const Eigen::Vector3d& c) const;
-  // The homogeneous part of degree d.
+  // The homogeneous part of degree d of the coefficients about origin() (the top degree's is
+  // the same about every origin), with the same origin.
   Polynomial homogeneous_part(int d) const;
 
-  // Readable form, e.g. "225x^2 + 100y^2 + 36z^2 - 225".
+  // Readable form, e.g. "225x^2 + 100y^2 + 36z^2 - 225"; a recentred polynomial is written in
+  // the shifted variables and names its origin, "x^2 + y^2 - 1 about (120000, -50000, 0)".
   std::string str() const;
 
  private:
+  void require_same_origin(const Polynomial& o) const;
+
   std::array<double, kNumCoeffs> coeffs_;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
 };
 
 inline Polynomial operator*(double s, const Polynomial& p) { return p * s; }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/geometry/curve_fit.h"
+#include "engine/geometry/solid_extent.h"
 #include "tests/engine/geometry/test_objects.h"
 
 namespace pcsg {
@@ -157,6 +158,33 @@ TEST(BrepBuilder, OneSurfaceCanGiveSeveralFaces) {
 
 namespace pcsg {
 namespace {
+
+// A needle 1:1:100 (scenes/stress/needle_in_dish.yaml), 0.05 thick and 5 long: thinner than
+// a cell of the grid of Tolerances::discovery_cells across its box (5 / 24 = 0.21), it used
+// to give "object A is empty". The grid now also has discovery_cells_across cells across its
+// thickness.
+TEST(BrepBuilder, NeedleThinnerThanTheCoarseGridIsFound) {
+  const ObjectSpec needle = test::object("A", {{"fA", "10000x^2 + 10000y^2 + z^2 <= 6.25"}});
+  const SolidExtent extent = solid_extent(needle);
+  // the shortest exit from the centre is the radius, to the 626 directions' spacing (0.14
+  // rad: the nearest direction to the equator is within 0.07 rad, 1 / cos 0.07 = 1.0025)
+  EXPECT_NEAR(extent.thickness, 0.05, 0.05 * 3e-3);
+  const Solid A = build_solid(needle, nullptr);
+  ASSERT_EQ(A.faces.size(), 1u);
+  EXPECT_TRUE(A.edges.empty());
+  EXPECT_NEAR(A.bbox.max().x(), 0.025, kExact);
+  EXPECT_NEAR(A.bbox.min().y(), -0.025, kExact);
+  EXPECT_NEAR(A.bbox.max().z(), 2.5, kExact);
+  // and one 1:1:10^5 is refused with a message naming its thickness
+  try {
+    build_solid(test::object("A", {{"fA", "1e10x^2 + 1e10y^2 + z^2 <= 6.25"}}), nullptr);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("object A is too thin to discover: 5e-05 thick"),
+              std::string::npos)
+        << e.what();
+  }
+}
 
 TEST(BrepBuilder, ScaledSceneGivesScaledElements) {
   // every tolerance and grid derives from the length scale: the same elements at any unit

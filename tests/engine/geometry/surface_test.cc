@@ -94,5 +94,28 @@ TEST(Surface, ProjectionsLandOnTheSurfacesWithinTheResidual) {
   EXPECT_TRUE(v.point.isApprox(Eigen::Vector3d(0.5, std::sqrt(3.0) / 6, std::sqrt(2.0 / 3)), 1e-12));
 }
 
+// Multiplying an inequality through by a positive constant changes neither its surface nor
+// the projections: the solves divide each row by its gradient's norm. Before they did,
+// project_onto_curve failed for the sphere x 1e8 against the paraboloid x 1e-8 (J J^T's
+// eigenvalues 1e32 apart, the small one cut by the pseudo-inverse).
+TEST(Surface, ProjectionsDoNotDependOnTheInequalitiesScales) {
+  const Tolerances tol = Tolerances::for_length_scale(10);
+  const Polynomial sphere = g_of("x^2 + y^2 + z^2 <= 16"), bottom = g_of("x^2 + y^2 - 4z <= 16");
+  const Polynomial third = g_of("(x - 4)^2 + y^2 + z^2 <= 16");
+  const Projection c = project_onto_curve(sphere, bottom, {3, 1, 0.5}, tol);
+  const Projection v = solve_three_surfaces(sphere, bottom, third, {2, 3, 0.3}, tol);
+  ASSERT_TRUE(c.converged);
+  ASSERT_TRUE(v.converged);
+  for (const auto& [k1, k2] : {std::pair{1e8, 1e-8}, std::pair{1e-8, 1e8}, std::pair{1e16, 1.0}}) {
+    SCOPED_TRACE(k1);
+    const Projection cs = project_onto_curve(sphere * k1, bottom * k2, {3, 1, 0.5}, tol);
+    ASSERT_TRUE(cs.converged);
+    EXPECT_LE((cs.point - c.point).norm(), 2 * tol.solve_residual);
+    const Projection vs = solve_three_surfaces(sphere * k1, bottom * k2, third, {2, 3, 0.3}, tol);
+    ASSERT_TRUE(vs.converged);
+    EXPECT_LE((vs.point - v.point).norm(), 2 * tol.solve_residual);
+  }
+}
+
 }  // namespace
 }  // namespace pcsg

@@ -63,6 +63,56 @@ TEST(Polynomial, SubstitutionIsComposition) {
   EXPECT_NEAR(h.value(p), g.value(M * p + c), 1e-12);
 }
 
+TEST(Polynomial, RecentringIsTheTaylorExpansionAboutTheNewOrigin) {
+  // a quartic (a torus) moved by a small integer vector: every coefficient of the moved
+  // expansion is an exact small integer or dyadic value, so recentring back is exact
+  const Eigen::Vector3d c(3, -2, 1);
+  const Polynomial s = X().pow(2) + Y().pow(2) + Z().pow(2) + Polynomial::constant(4 - 0.25);
+  const Polynomial local = s.pow(2) - (X().pow(2) + Y().pow(2)) * 16;  // about the origin
+  const Polynomial moved = local.substituted(Eigen::Matrix3d::Identity(), -c);
+  const Polynomial back = moved.recentred(c);
+  EXPECT_EQ(back.origin(), c);
+  for (int n = 0; n < Polynomial::kNumCoeffs; ++n)
+    EXPECT_EQ(back.coeffs()[n], local.coeffs()[n]) << "coefficient " << n;
+  // value, derivatives and lines at world points are the moved polynomial's
+  const Eigen::Vector3d q(0.7, -1.3, 0.4), d(0.5, 1.5, -0.7);
+  EXPECT_NEAR(back.value(c + q), moved.value(c + q), kExact * 100);
+  EXPECT_TRUE(back.gradient(c + q).isApprox(moved.gradient(c + q), kExact));
+  EXPECT_TRUE(back.hessian(c + q).isApprox(moved.hessian(c + q), kExact));
+  const auto lb = back.along_line(c + q, d), lm = moved.along_line(c + q, d);
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(lb[k], lm[k], kExact * 100) << k;
+  // recentring again, or substituting, composes with the origin
+  EXPECT_NEAR(back.recentred(c + q).value(c), back.value(c), kExact * 100);
+  EXPECT_TRUE(back.recentred(Eigen::Vector3d::Zero()).origin().isZero());
+  EXPECT_NEAR(back.substituted(Eigen::Matrix3d::Identity(), c).value(q), local.value(q),
+              kExact * 100);
+  // sums need one origin; a product by a constant keeps it
+  EXPECT_THROW(back + local, std::invalid_argument);
+  EXPECT_EQ((back * 2.0).origin(), c);
+  EXPECT_EQ(X().recentred(Eigen::Vector3d(1, 0, 0)).str(), "x + 1 about (1, 0, 0)");
+}
+
+// Example 1's sphere moved 1.32e5 away (scenes/stress/example1_far_rotated.yaml): its
+// expanded coefficients (integers up to 1.7e10) are exact, but evaluating them near the
+// sphere cancels ten digits. Recentred at the sphere's centre it is x^2 + y^2 + z^2 - 16
+// again, exact to the last bit near the surface.
+TEST(Polynomial, RecentringAFarSphereRemovesTheCancellation) {
+  const Eigen::Vector3d c(120000, -50000, 20000);
+  const Polynomial local = X().pow(2) + Y().pow(2) + Z().pow(2) - Polynomial::constant(16);
+  const Polynomial far = local.substituted(Eigen::Matrix3d::Identity(), -c);
+  EXPECT_EQ(far.coeff(0, 0, 0), 120000.0 * 120000 + 50000.0 * 50000 + 20000.0 * 20000 - 16);
+  const Polynomial back = far.recentred(c);
+  for (int n = 0; n < Polynomial::kNumCoeffs; ++n)
+    EXPECT_EQ(back.coeffs()[n], local.coeffs()[n]) << "coefficient " << n;
+  // at points of the sphere that c + q represents exactly: the recentred value is exact,
+  // the far one is round-off of terms ~1.7e10
+  for (const Eigen::Vector3d& q : {Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(0, -4, 0),
+                                  Eigen::Vector3d(4, 0, 0)}) {
+    EXPECT_EQ(back.value(c + q), local.value(q));
+    EXPECT_NEAR(far.value(c + q), 0, 1e-15 * far.coeff(0, 0, 0)) << "the cancellation's size";
+  }
+}
+
 TEST(Polynomial, DegreeOverflowThrows) {
   EXPECT_THROW(X().pow(3) * Y().pow(2), std::domain_error);
   EXPECT_THROW(X().pow(5), std::domain_error);

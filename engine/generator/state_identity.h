@@ -1,0 +1,49 @@
+#pragma once
+// State identity (paper Section II-C): two witnesses of one CF are the same point-contact
+// state only when a CF-compliant motion joins them; otherwise they are distinct states.
+//
+// Two tools: an invariant of a CF's connected regions that tells two regions apart without
+// any motion (the crossing signs of e-e-cross contacts), and a joining test that is stronger
+// than one straight motion (both directions, then through the midpoint of the two witnesses
+// re-projected onto the CF, which lies in the region's interior far more often than the
+// witnesses themselves, which transitions leave a few steps inside a boundary).
+#include <tuple>
+#include <vector>
+
+#include "engine/generator/symmetry.h"
+#include "engine/generator/transition_motion.h"
+
+namespace pcsg {
+
+// For every e-e-cross contact, its pair and the sign of (t_A x t_B) . n_B, where t_A, t_B are
+// the edges' tangents (oriented by their faces' gradients, grad g1 x grad g2, so consistently
+// along each whole edge) and n_B is B's outward contact normal. Along a CF-compliant motion
+// the contact stays e-e-cross, t_A x t_B never vanishes (that would be e-e-touch, another
+// CF) and everything is continuous, so the sign cannot change: witnesses with different
+// signatures lie in different regions. Sorted, so that it compares as a multiset. Invariant
+// under scaling and rigid motions of the scene (both tangents and the normal turn together).
+using RegionSignature = std::vector<std::tuple<int, int, int, int, int>>;
+RegionSignature region_signature(const std::vector<PointContact>& contacts);
+
+// The solids' axes of revolution (symmetry.h), when they have one.
+struct SceneSymmetry {
+  std::optional<SymmetryAxis> B;  // in B's frame
+  std::optional<SymmetryAxis> A;  // in A's frame
+  static SceneSymmetry of(const SceneGeometry& scene);
+};
+
+// Whether the witnesses `a` and `b` of `cf` are shown to lie in one CF-connected region:
+//  1. a CF-compliant motion (connected_within_cf) from a to b or from b to a;
+//  2. when B (A) is a solid of revolution: a turned about B's axis until A's centre is over
+//     b's, then about A's own axis until the orientations agree best (both turns keep every
+//     contact, symmetry.h), then 1. from there;
+//  3. with `midpoint_levels` > 0, the pose halfway between them (positions averaged,
+//     orientations slerped) projected onto `cf` and checked by exact detection serves as a
+//     waypoint that each end must reach the same way (with one level fewer).
+// Every accepted path is a chain of CF-compliant motions, so `true` is a proof; `false`
+// proves nothing.
+bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
+                      const ContactFormation& cf, MotionCounters& counters,
+                      const SceneSymmetry& symmetry = {}, int midpoint_levels = 1);
+
+}  // namespace pcsg

@@ -1,0 +1,35 @@
+#pragma once
+// Continuous rotational symmetry of a solid (a solid of revolution), used to prove CF
+// connectivity (state_identity.h): turning A about B's axis, or about its own, maps a
+// configuration onto one with the same contacts at every intermediate angle, since every
+// element is mapped onto itself (a continuous family of maps starting at the identity cannot
+// exchange elements). That is a CF-compliant motion (paper Section II-C) with no steps to
+// check.
+#include <optional>
+
+#include "engine/core/pose.h"
+#include "engine/core/tolerances.h"
+#include "engine/geometry/solid.h"
+
+namespace pcsg {
+
+// An axis of rotational symmetry, in the solid's own frame.
+struct SymmetryAxis {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit
+};
+
+// The solid's axis of revolution, when it has exactly one. Found from the infinitesimal
+// condition grad g(x) . (u x (x - c)) = 0 for every polynomial g and point x, which is linear
+// in the axis's Plücker coordinates (u, c x u): the null vector of the stacked conditions at
+// a grid of points over the solid's box. Confirmed by rotating each polynomial by one radian
+// (tol.symmetry_relative). nullopt when there is no such axis, or more than one (a ball).
+std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances& tol);
+
+// The pose reached by turning A about B's axis `axis_B` by `angle` (radians): X' = R X.
+Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle);
+// The pose reached by turning A about its own axis `axis_A` by `angle`: A's points move, B's
+// frame stays: X' = X R_A.
+Pose turned_about_A(const Pose& X, const SymmetryAxis& axis_A, double angle);
+
+}  // namespace pcsg

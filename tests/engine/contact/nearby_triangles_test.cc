@@ -1,0 +1,154 @@
+// NearbyTriangles (contact_context.h): the triangle pairs gathered once for a neighbourhood of
+// poses must give, at every pose inside it, exactly the pairs (and so the contacts) of a full
+// BVH query. Tested where it is hardest: the ellipsoid lying in the dish (paper Fig. 5b), two
+// nearly conformal contacts whose inflated meshes overlap over many triangles.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "engine/contact/contact.h"
+#include "engine/contact/contact_context.h"
+#include "tests/engine/contact/test_shapes.h"
+
+namespace pcsg {
+namespace {
+
+using K = testkit::BowlConstants;
+
+// The closed-form resting height of the lying ellipsoid (bowl_contacts_test.cc).
+Pose resting_pose() {
+  Pose X;
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+  X.position = {0, 0, 6.25 * K::a + 1 / (25 * K::a) - K::b};
+  return X;
+}
+
+SceneGeometry bowl_scene() {
+  return testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid(1));
+}
+
+// A pose near X: a random twist about A's centre, scaled so that the context's displacement
+// bound is `fraction` of `margin`.
+Pose pose_near(const ContactContext& ctx, const Pose& X, double margin, double fraction,
+               std::mt19937& rng) {
+  std::normal_distribution<double> n(0, 1);
+  const Eigen::Vector3d v(n(rng), n(rng), n(rng)), w(n(rng), n(rng), n(rng));
+  auto at = [&](double s) { return X.displaced(s * v, s * w / 3, X.position); };
+  // The bound grows monotonically with s: bisect for the wanted size.
+  double lo = 0, hi = margin;
+  while (ctx.displacement(X, at(hi)) < fraction * margin) hi *= 2;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (ctx.displacement(X, at(mid)) < fraction * margin ? lo : hi) = mid;
+  }
+  return at(lo);
+}
+
+std::vector<std::pair<int, int>> sorted(std::vector<std::pair<int, int>> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(NearbyTriangles, DisplacementBoundsTheMotionOfEveryMeshVertex) {
+  const SceneGeometry scene = bowl_scene();
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  std::mt19937 rng(7);
+  for (int k = 0; k < 20; ++k) {
+    const Pose Y = pose_near(ctx, X, 0.05 * scene.tol.length_scale, 1.0, rng);
+    double moved = 0;
+    for (const Eigen::Vector3d& p : scene.mesh_A.positions)
+      moved = std::max(moved, (Y.apply(p) - X.apply(p)).norm());
+    EXPECT_LE(moved, ctx.displacement(X, Y)) << "pose " << k;
+  }
+  // A pure translation moves every point by its length (to round-off of 1e-15 L).
+  Pose T = X;
+  T.position += Eigen::Vector3d(0.3, -0.4, 0);
+  EXPECT_NEAR(ctx.displacement(X, T), 0.5, 1e-15 * scene.tol.length_scale);
+}
+
+TEST(NearbyTriangles, GiveTheFullQuerysPairsEverywhereWithinTheMargin) {
+  const SceneGeometry scene = bowl_scene();
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  // One motion step of the generator: the bracket of an event's bisection.
+  const double margin = scene.tol.motion_step;
+  const NearbyTriangles near = ctx.nearby_triangles(X, margin);
+  std::mt19937 rng(11);
+  int nonempty = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Pose Y = pose_near(ctx, X, margin, (k % 4 + 1) / 4.0, rng);
+    std::vector<std::pair<int, int>> full, filtered;
+    ASSERT_TRUE(ctx.overlapping_triangles(Y, full, 1000000));
+    ASSERT_TRUE(ctx.overlapping_triangles_near(Y, near, filtered, 1000000)) << "pose " << k;
+    EXPECT_EQ(sorted(full), sorted(filtered)) << "pose " << k;
+    nonempty += !full.empty();
+  }
+  // Most of these poses are in or near contact: the comparison is not between empty lists.
+  EXPECT_GE(nonempty, 12);
+  // Outside the margin the nearby pairs do not answer.
+  std::vector<std::pair<int, int>> pairs;
+  EXPECT_FALSE(ctx.overlapping_triangles_near(pose_near(ctx, X, margin, 1.5, rng), near, pairs,
+                                              1000000));
+}
+
+// Narrowing filters the wide set by the leaves' boxes only, so it may keep a pair whose
+// ancestors' boxes a fresh traversal found apart (a child's box can stick out of its parent's);
+// both hold every pair that can overlap, and the narrowed one answers like a full query.
+TEST(NearbyTriangles, NarrowingAWideSetCoversWhatGatheringAfreshFinds) {
+  const SceneGeometry scene = bowl_scene();
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  const double margin = scene.tol.motion_step;
+  const NearbyTriangles wide = ctx.nearby_triangles(X, margin);
+  std::mt19937 rng(3);
+  const Pose Y = pose_near(ctx, X, margin, 0.5, rng);
+  const double small = 0.25 * margin;
+  const NearbyTriangles narrow = ctx.nearby_triangles(Y, small, wide);
+  const NearbyTriangles fresh = ctx.nearby_triangles(Y, small);
+  EXPECT_FALSE(fresh.leaves.empty());
+  EXPECT_LT(narrow.leaves.size(), wide.leaves.size());
+  const auto n = sorted(narrow.leaves), f = sorted(fresh.leaves);
+  EXPECT_TRUE(std::includes(n.begin(), n.end(), f.begin(), f.end()));
+  for (int k = 0; k < 8; ++k) {
+    const Pose Z = pose_near(ctx, Y, small, (k % 4 + 1) / 4.0, rng);
+    std::vector<std::pair<int, int>> full, filtered;
+    ASSERT_TRUE(ctx.overlapping_triangles(Z, full, 1000000));
+    ASSERT_TRUE(ctx.overlapping_triangles_near(Z, narrow, filtered, 1000000)) << "pose " << k;
+    EXPECT_EQ(sorted(full), sorted(filtered)) << "pose " << k;
+  }
+}
+
+TEST(NearbyTriangles, DetectionThroughThemIsIdenticalToAFullQuery) {
+  const SceneGeometry scene = bowl_scene();
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  const double margin = scene.tol.motion_step;
+  const NearbyTriangles near = ctx.nearby_triangles(X, margin);
+  DetectOptions plain, through;
+  plain.near_margin = through.near_margin = ctx.guaranteed_band();
+  through.nearby = &near;
+  std::mt19937 rng(5);
+  std::vector<Pose> poses = {X};
+  for (int k = 0; k < 8; ++k) poses.push_back(pose_near(ctx, X, margin, 0.1 * (k + 1), rng));
+  for (size_t k = 0; k < poses.size(); ++k) {
+    const ContactReport a = detect_contacts(ctx, poses[k], plain);
+    const ContactReport b = detect_contacts(ctx, poses[k], through);
+    ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "pose " << k;
+    ASSERT_EQ(a.near.size(), b.near.size()) << "pose " << k;
+    ASSERT_EQ(a.penetrations.size(), b.penetrations.size()) << "pose " << k;
+    // Bit for bit: the same pairs give the same solves from the same starts.
+    for (size_t i = 0; i < a.contacts.size(); ++i) {
+      EXPECT_EQ(a.contacts[i].point_B, b.contacts[i].point_B) << "pose " << k;
+      EXPECT_EQ(a.contacts[i].gap, b.contacts[i].gap) << "pose " << k;
+    }
+    for (size_t i = 0; i < a.near.size(); ++i) EXPECT_EQ(a.near[i].gap, b.near[i].gap);
+    for (size_t i = 0; i < a.penetrations.size(); ++i)
+      EXPECT_EQ(a.penetrations[i].depth, b.penetrations[i].depth);
+  }
+  EXPECT_EQ(detect_contacts(ctx, X, through).contacts.size(), 2u);
+}
+
+}  // namespace
+}  // namespace pcsg

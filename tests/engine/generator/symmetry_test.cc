@@ -1,0 +1,81 @@
+#include "engine/generator/symmetry.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/generator/state_identity.h"
+#include "generator_test_support.h"
+
+namespace pcsg {
+namespace {
+
+SceneGeometry scene(const std::string& name) {
+  return build_scene_geometry(load_scene_file(testing::scene_path(name)));
+}
+
+// Round-off of the axis from a least-squares null vector of O(1) conditions.
+constexpr double kAxisTolerance = 1e-9;
+
+void expect_axis(const std::optional<SymmetryAxis>& axis, const Eigen::Vector3d& point,
+                 const Eigen::Vector3d& direction, double length_scale) {
+  ASSERT_TRUE(axis.has_value());
+  EXPECT_NEAR(std::abs(axis->direction.dot(direction.normalized())), 1.0, kAxisTolerance);
+  // The axis passes through `point`: its distance to the line is ~0.
+  const Eigen::Vector3d r = point - axis->point;
+  EXPECT_NEAR((r - axis->direction * axis->direction.dot(r)).norm(), 0,
+              kAxisTolerance * length_scale);
+}
+
+// B of the paper's examples is a solid of revolution about z (x and y enter only as
+// x^2 + y^2); the lens of Example 2 and the torus too. The ellipsoid (three different
+// semi-axes) and the three-sphere lens (a three-fold symmetry only) are not.
+TEST(Symmetry, AxesOfTheShippedScenes) {
+  const SceneGeometry ex1 = scene("example1.yaml"), ex2 = scene("example2.yaml");
+  const SceneGeometry torus = scene("torus.yaml"), three = scene("three_spheres.yaml");
+  const double L = ex1.tol.length_scale;
+  expect_axis(axis_of_revolution(ex1.B, ex1.tol), {0, 0, 0}, {0, 0, 1}, L);
+  EXPECT_FALSE(axis_of_revolution(ex1.A, ex1.tol).has_value());
+  expect_axis(axis_of_revolution(ex2.A, ex2.tol), {0, 0, 0}, {0, 0, 1}, L);
+  expect_axis(axis_of_revolution(torus.A, torus.tol), {0, 0, 0}, {0, 0, 1}, L);
+  EXPECT_FALSE(axis_of_revolution(three.A, three.tol).has_value());
+}
+
+// The axis moves with B and scales with the scene.
+TEST(Symmetry, AxisFollowsScalingAndRigidMotion) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  Pose X;
+  X.position = {3.0, -2.0, 5.0};
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 2).normalized()));
+  const SceneGeometry moved = build_scene_geometry(moved_scene(spec, X));
+  expect_axis(axis_of_revolution(moved.B, moved.tol), X.position, X.rotate({0, 0, 1}),
+              moved.tol.length_scale);
+  for (double s : {1e-3, 1e3}) {
+    const SceneGeometry scaled = build_scene_geometry(scaled_scene(spec, s));
+    expect_axis(axis_of_revolution(scaled.B, scaled.tol), {0, 0, 0}, {0, 0, 1},
+                scaled.tol.length_scale);
+  }
+}
+
+// Turning a witness about B's axis keeps its contacts exactly (the point of the symmetry).
+TEST(Symmetry, TurningAboutBsAxisKeepsTheContacts) {
+  const SceneGeometry ex2 = scene("example2.yaml");
+  const SceneSymmetry sym = SceneSymmetry::of(ex2);
+  ASSERT_TRUE(sym.B && sym.A);
+  // A witness of {(eA-f1, 1)} from a run of the generator: the lens's rim on the dish.
+  const Pose w = parse_pose(
+      "-0.24660227524736344 0.93589654115046006 1.1693264145690472 0.5389870201911241 "
+      "-0.54072412486306964 -0.092215921983104313 -0.6392234637349965");
+  ASSERT_EQ(ContactFormation::of(detect_contacts(ex2, w).contacts).str(ex2), "{(eA-f1, 1)}");
+  for (double angle : {0.5, 2.0, -2.9}) {
+    for (const Pose& t : {turned_about_B(w, *sym.B, angle),
+                          turned_about_A(w, *sym.A, angle)}) {
+      const ContactReport rep = detect_contacts(ex2, t);
+      EXPECT_FALSE(rep.penetrating());
+      EXPECT_EQ(ContactFormation::of(rep.contacts).str(ex2), "{(eA-f1, 1)}");
+      for (const PointContact& c : rep.contacts)
+        EXPECT_LE(std::abs(c.gap), ex2.tol.contact_gap);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pcsg
