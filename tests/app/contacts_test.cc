@@ -3,6 +3,8 @@
 // raised pose, penetration, and the usage errors (exit code 2).
 #include <gtest/gtest.h>
 
+#include "run_pcsg.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -22,24 +24,8 @@ constexpr double kLengthScale = 13.0158;
 // the pose is printed with 17 digits, so nothing is lost in the text).
 constexpr double kTouching = 1e-10 * kLengthScale;
 
-struct ExeRun {
-  int exit_code = -1;
-  std::string out;
-};
-
-ExeRun run_pcsg(const std::string& args, bool merge_stderr = false) {
-  const std::string cmd =
-      std::string(PCSG_EXE) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
-  ExeRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using pcsg::testing::ExeRun;
+using pcsg::testing::run_pcsg;
 
 std::string example1() { return std::string(PCSG_SOURCE_DIR) + "/scenes/example1.yaml"; }
 

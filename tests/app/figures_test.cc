@@ -3,6 +3,8 @@
 // the binary on stored graphs (tests/data/graphs), which keep them to a few seconds.
 #include <gtest/gtest.h>
 
+#include "run_pcsg.h"
+
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -119,23 +121,9 @@ TEST(GraphEventStreamTest, AStoppedConsumerCancelsTheGenerator) {
   EXPECT_TRUE(cancel);
 }
 
-struct ExeRun {
-  int exit_code = -1;
-  std::string out;
-};
-
-ExeRun run_pcsg(const std::string& args) {
-  const std::string cmd = std::string(PCSG_EXE) + " " + args + " 2>&1";
-  ExeRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using pcsg::testing::ExeRun;
+// Runs pcsg with stderr merged into what is captured.
+ExeRun run_pcsg(const std::string& args) { return pcsg::testing::run_pcsg(args, true); }
 
 std::string source(const std::string& relative) { return std::string(PCSG_SOURCE_DIR) + "/" + relative; }
 

@@ -1,6 +1,8 @@
 // End-to-end: `pcsg inspect` on the paper's scenes, reading its --json output.
 #include <gtest/gtest.h>
 
+#include "run_pcsg.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -19,25 +21,8 @@ constexpr double kPaperDigits = 1e-4;
 // kernel's solve residual (1e-12 L, L ~ 13): 1e-9 leaves margin.
 constexpr double kExact = 1e-9;
 
-struct ExeRun {
-  int exit_code = -1;
-  std::string out;
-};
-
-// Runs the built pcsg with `args`, capturing stdout (stderr is merged when asked).
-ExeRun run_pcsg(const std::string& args, bool merge_stderr = false) {
-  const std::string cmd =
-      std::string(PCSG_EXE) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
-  ExeRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using pcsg::testing::ExeRun;
+using pcsg::testing::run_pcsg;
 
 json inspect(const std::string& scene) {
   const ExeRun r = run_pcsg("inspect " + std::string(PCSG_SOURCE_DIR) + "/scenes/" + scene + " --json");

@@ -2,6 +2,8 @@
 // at two resolutions, reading the CSV, the Markdown report and the chart it writes.
 #include <gtest/gtest.h>
 
+#include "run_pcsg.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -17,23 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct ExeRun {
-  int exit_code = -1;
-  std::string out;
-};
-
-ExeRun run_pcsg(const std::string& args) {
-  const std::string cmd = std::string(PCSG_EXE) + " " + args + " 2>&1";
-  ExeRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using pcsg::testing::ExeRun;
+// Runs pcsg with stderr merged into what is captured.
+ExeRun run_pcsg(const std::string& args) { return pcsg::testing::run_pcsg(args, true); }
 
 std::string read(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
