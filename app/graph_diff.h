@@ -27,8 +27,7 @@ struct GraphDiff {
   int repeats = 0, reference_repeats = 0;
   // Same CFs and links (repeated states aside: they are reported, not compared).
   bool same_cfs_and_links() const {
-    return cfs_added.empty() && cfs_missing.empty() && links_added.empty() &&
-           links_missing.empty();
+    return cfs_added.empty() && cfs_missing.empty() && links_added.empty() && links_missing.empty();
   }
   bool same() const { return same_cfs_and_links() && repeats == reference_repeats; }
   // "same", or e.g. "-2 CFs, +1 link, 3 repeats (ref 4)"

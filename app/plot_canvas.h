@@ -27,8 +27,7 @@ class PlotCanvas {
 
   // A segment of the given width (pixels), with round ends; `dash` > 0 draws dashes of that
   // length with gaps of the same length.
-  void line(double x0, double y0, double x1, double y1, double width, Rgb color,
-            double dash = 0);
+  void line(double x0, double y0, double x1, double y1, double width, Rgb color, double dash = 0);
   void fill_rect(double x0, double y0, double x1, double y1, Rgb color);
   void stroke_rect(double x0, double y0, double x1, double y1, double width, Rgb color);
   // A marker of the given radius (pixels) centred at (x, y); hollow ones are outlined.

@@ -1,9 +1,9 @@
 #pragma once
-// The camera view SceneRenderer::render frames a request with, for drawing over its images on
-// the CPU (contact-role rings on transition frames). It repeats the renderer's framing: B's
-// mesh and A's at its displayed pose fitted into the image below the header, with room for the
-// labels at the sides and below. tests/render/frame_camera_test.cc checks that a contact the
-// renderer marks lands where this view projects it, so the two cannot drift apart silently.
+// The camera view SceneRenderer::render frames a request with (it calls this), also used for
+// drawing over its images on the CPU (contact-role rings on transition frames): B's mesh and
+// A's at its displayed pose fitted into the image below the header, with room for the labels
+// at the sides and below. tests/render/frame_camera_test.cc checks that a contact the renderer
+// marks lands where this view projects it.
 #include "engine/geometry/scene_geometry.h"
 #include "render/camera.h"
 #include "render/scene_renderer.h"

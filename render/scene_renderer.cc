@@ -6,6 +6,7 @@
 
 #include "engine/core/error.h"
 #include "render/annotations.h"
+#include "render/frame_camera.h"
 #include "render/gl_context.h"
 #include "render/gl_program.h"
 #include "render/id_target.h"
@@ -30,10 +31,6 @@ constexpr double kEdgeDepthBiasShare = 4e-3;
 constexpr int kIdDownscale = 4;
 // In the id image, edges are drawn this wide (id pixels) so that none is missed between pixels.
 constexpr float kIdEdgeWidth = 1.5f;
-// Share of the image width kept free on each side of the objects for labels, and of the
-// height below them.
-constexpr double kSideRoom = 0.12;
-constexpr double kBottomRoom = 0.07;
 // Gap between B and A in the apart view, as a share of the larger object's bbox diagonal.
 constexpr double kApartGapShare = 0.12;
 // The context's first target size (resized on the first frame of another size).
@@ -238,13 +235,7 @@ struct SceneRenderer::Impl {
 
     // where A is drawn, and a camera that frames both objects below the header
     const Pose X_WA = display_pose_of_A(scene, f.X_BA, f.camera);
-    std::vector<Eigen::Vector3d> points = scene.mesh_B.positions;
-    points.reserve(points.size() + scene.mesh_A.positions.size());
-    for (const auto& p : scene.mesh_A.positions) points.push_back(X_WA.apply(p));
-    const double header = header_height(f);
-    const PixelRect fit{kSideRoom * f.width, header + kBottomRoom * f.height,
-                        (1 - kSideRoom) * f.width, (1 - kBottomRoom) * f.height};
-    const CameraView view = frame_points(f.camera, points, f.width, f.height, fit);
+    const CameraView view = frame_camera_view(scene, f);
     const float scale = static_cast<float>(std::max(0.5, f.height / kReferenceHeight));
     const float edge_px = std::max(1.f, static_cast<float>(kEdgeWidthPx) * scale);
     buffers.sort_back_to_front(view, X_WA);

@@ -22,8 +22,8 @@ struct TransitionStarted {
   render::TransitionInfo info;
   std::vector<PointContact> start;  // the start state's contacts
   int frames = 0;
-  int replayed_steps = 0;  // frames the replay produced (before the stride)
-  std::vector<Pose> poses; // A's pose at every frame drawn: one framing for the sequence
+  int replayed_steps = 0;   // frames the replay produced (before the stride)
+  std::vector<Pose> poses;  // A's pose at every frame drawn: one framing for the sequence
 };
 struct TransitionFrameReady {
   int index = -1;
@@ -39,17 +39,17 @@ struct TransitionSkipped {
   int index = -1;
   std::string why;
 };
-using FigureEvent = std::variant<StateFound, CandidateTried, GenerationProgress, GraphFinished,
-                                 TransitionStarted, TransitionFrameReady, TransitionFinished,
-                                 TransitionSkipped>;
+using FigureEvent =
+    std::variant<StateFound, CandidateTried, GenerationProgress, GraphFinished, TransitionStarted,
+                 TransitionFrameReady, TransitionFinished, TransitionSkipped>;
 
 struct PipelineOptions {
   GeneratorOptions generator;
-  bool transitions = true;        // replay and draw candidate motions
-  bool failed_only = false;       // only the candidates that failed
-  std::set<int> candidates;       // only these candidate indices (empty: all)
-  int stride = 0;                 // draw every stride-th motion step (0: from max_frames)
-  int max_frames = 8;             // with stride 0: about this many frames per motion
+  bool transitions = true;   // replay and draw candidate motions
+  bool failed_only = false;  // only the candidates that failed
+  std::set<int> candidates;  // only these candidate indices (empty: all)
+  int stride = 0;            // draw every stride-th motion step (0: from max_frames)
+  int max_frames = 8;        // with stride 0: about this many frames per motion
   std::size_t queue_capacity = 16;
 };
 

@@ -25,19 +25,19 @@ struct FigureWriterOptions {
   std::string folder;  // where the scene's files go (created)
   render::Camera camera;
   int picture_width = 1280, picture_height = 960;  // states/state-NN.png, apart.png
-  render::StatePictureOptions thumbnail;            // diagram nodes and grid cells
-  render::TransitionFrameStyle frame;               // transition frames
-  int sheet_cell_width = 400;                       // frames in a contact sheet
+  render::StatePictureOptions thumbnail;           // diagram nodes and grid cells
+  render::TransitionFrameStyle frame;              // transition frames
+  int sheet_cell_width = 400;                      // frames in a contact sheet
   bool states = true, diagram = true, transitions = true;
   bool motion_labels = true;
 };
 
 struct FigureSummary {
   std::size_t states = 0, links = 0, candidates = 0, feasible = 0;
-  int transitions = 0, frames = 0;  // drawn
+  int transitions = 0, frames = 0;   // drawn
   std::vector<std::string> skipped;  // candidates whose motion could not be replayed, and why
   double generation_seconds = 0;
-  GenerationProgress progress;      // the last reported
+  GenerationProgress progress;  // the last reported
   bool finished = false;
   std::vector<std::string> figures;  // files written that a reader looks at first
 };

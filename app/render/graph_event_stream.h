@@ -19,7 +19,7 @@ struct StateFound {
 struct CandidateTried {
   int index = -1;  // in the order the generator reports them (= StateGraph::candidates)
   Candidate candidate;
-  State from;      // the state it starts from, with its exact contacts
+  State from;  // the state it starts from, with its exact contacts
 };
 struct GenerationProgress {
   int level = 0, done = 0, total = 0;
