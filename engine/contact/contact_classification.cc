@@ -79,7 +79,7 @@ Classification classify_solution(const SceneGeometry& scene, const Pose& X_BA,
                    ElementId& id) -> bool {
     // On the boundary counts as outside: the relative interior is open, and a point on an
     // edge of a face belongs to the edge (the lower-dimensional element wins ties).
-    const Violation v = worst_violation(solid, set, p);
+    const Violation v = bounding_violation(solid, set, p, tol.on_boundary, tol.tangential_sine);
     if (v.surface < 0 || v.distance < -tol.on_boundary) return true;
     SurfaceSet next = set;
     next.add(v.surface);

@@ -45,20 +45,26 @@ TEST(StressShapes, EllipsoidPoleOnTheDishTip) {
 }
 
 TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
-  GTEST_SKIP() << "engine defect (contact classification at a point on two surfaces that is "
-                  "on no edge): B's lowest point (0, 0, -4) is f3's vertex and also lies on "
-                  "f2's sphere, tangent to f3 there. At the exact touch (pose 0 0 -6.5, pole "
-                  "on vertex) detect_contacts reports no contact and no penetration (CF {}), "
-                  "so the listed seed is rejected ('touches nothing'); 1e-4 deeper it reports "
-                  "a penetration 'fA-e2 at (0, 0, -3.99995)', attributing the point to edge e2 "
-                  "(the circle r = 4, z = 0, 4 away) because both of e2's surfaces vanish "
-                  "there.";
   const SceneSpec spec = load_scene_file(stress_path("pole_on_bottom_tip.yaml"));
   const SceneGeometry scene = build_scene_geometry(spec);
   const ContactReport rep = detect_contacts(scene, spec.seeds.at(0).pose);
   ASSERT_EQ(rep.contacts.size(), 1u);
   EXPECT_EQ(element_pair_name(scene, rep.contacts[0].a, rep.contacts[0].b), "fA-f3");
   EXPECT_NEAR(rep.contacts[0].point_B.z(), -4, scene.tol.contact_gap);
+  // 1e-4 deeper: a penetration of fA into f3's interior at the vertex, not at edge e2 (the
+  // sphere of f2 touches f3 there tangentially and does not bound it)
+  constexpr double kDeeper = 1e-4;
+  Pose deeper = spec.seeds.at(0).pose;
+  deeper.position.z() += kDeeper;
+  const ContactReport pen = detect_contacts(scene, deeper);
+  EXPECT_TRUE(pen.contacts.empty());
+  ASSERT_FALSE(pen.penetrations.empty());
+  for (const Penetration& p : pen.penetrations) {
+    EXPECT_EQ(element_pair_name(scene, p.a, p.b), "fA-f3");
+    EXPECT_LT(p.point_B.head<2>().norm(), scene.tol.distinct_points);
+    // the pole's depth to first order (the curvature terms are 1e-8 over 1e-4 of depth)
+    EXPECT_NEAR(p.depth, kDeeper, 1e-2 * kDeeper);
+  }
   expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
 }
 
