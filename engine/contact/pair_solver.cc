@@ -23,6 +23,13 @@ Eigen::Matrix<double, 1, 6> separation_row(const Eigen::Vector3d& e, const Eigen
   return row;
 }
 
+// Sine of the angle between two edges' tangents at their points (A's in A's frame).
+double tangents_sine(const SceneGeometry& scene, const Pose& X_BA, ElementId a, ElementId b,
+                      const Eigen::Vector3d& p_A, const Eigen::Vector3d& p_B) {
+  const Eigen::Vector3d t_a = X_BA.rotation() * edge_jet(scene.A, a.index, p_A).tangent;
+  return t_a.cross(edge_jet(scene.B, b.index, p_B).tangent).norm();
+}
+
 }  // namespace
 
 PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
@@ -52,7 +59,13 @@ PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, El
       out.iterations = r.iterations;
       if (!r.converged) return out;
     }
-    const PairPoints p = system.points(z);
+    PairPoints p = system.points(z);
+    // nearly parallel rims: the common slide along them needs the polish (pair_crossing.cc)
+    if (type == PtcType::EECross &&
+        tangents_sine(scene, X_BA, a, b, p.p_A, p.p_B) < scene.tol.near_collinear_sine) {
+      system.polish_crossing(z, scene.tol.distinct_points, scene.tol.solve_max_iterations);
+      p = system.points(z);
+    }
     c.p_A = p.p_A;
     c.p_B = p.p_B;
     c.gap = p.gap;

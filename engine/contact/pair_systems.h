@@ -65,6 +65,10 @@ class PairSystem final : public SquareSystem {
   // common perpendicular oriented out of B; for v-e, e-v and v-v the gap is |D| signed by
   // the side of the edge's (vertex's) outward bisector, and the normal that bisector.
   PairPoints points(const SmallVector& z) const;
+  // e-e-cross only (no-op otherwise): refines a solution z whose tangents are nearly parallel,
+  // where the common slide of both points along the rims is poorly conditioned in the Newton
+  // system (pair_crossing.cc). Moves the points by at most max_shift in all.
+  void polish_crossing(SmallVector& z, double max_shift, int max_iterations) const;
 
  private:
   void evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;

@@ -75,19 +75,12 @@ TEST(StressEdges, CollinearRimsClassifyAsTouchThenCrossWithoutFlicker) {
 }
 
 // For an e-e-cross contact the normal is the cross product of the tangents: here (1, 0, 0)
-// at every phi. Tangents exact to ~1e-12 give it to ~1e-12 / phi; asked: 1e-9 / phi.
+// at every phi. Along nearly parallel rims the crossing is located only to (round-off of the
+// points across the rims) / phi, and the tangents turn by kappa times that: the normal is
+// exact to ~kappa eps' / phi^2. Here eps' ~ 7e-17 (the rim points' z), measured after the
+// polish (pair_crossing.cc): 1.3e-3 at phi = 3e-7, 1.4e-4 at 1e-6, 2e-7 at 1e-5 (before it:
+// 5.4e-2, 5.5e-2, 4e-5). Asked: 1e-9 / phi, which the Newton solve alone missed below 1e-5.
 TEST(StressEdges, NearlyCollinearCrossingHasTheExactNormal) {
-  GTEST_SKIP() << "engine defect (engine/contact e-e-cross solve near collinear tangents), "
-                  "measured: at phi = 3e-7 the normal is (0.99853, -6.5e-9, 0.0542), at 1e-6 "
-                  "(0.99848, -2.2e-8, 0.0551), at 1e-5 off by 4e-5. Newton stops with both "
-                  "points slid along the nearly parallel rims by delta = 9.8e-9 (3.3e-8 at "
-                  "1e-6): the rows' residual there is ~delta phi + delta^2 ~ 3e-15, far below "
-                  "solve_residual, but the tangents turn by kappa delta and their cross "
-                  "product by kappa delta / phi. (From the exact points the solve stays "
-                  "exact.) A polish along that direction is limited by the round-off of D "
-                  "(eps |p| ~ 3e-16) to delta ~ eps |p| / phi, i.e. a normal error ~ kappa eps "
-                  "|p| / phi^2 ~ 5e-3 at phi = 3e-7, still above the asked 1e-9 / phi = "
-                  "3.3e-3: this formulation cannot meet the bound at the smallest phi.";
   const SceneGeometry scene =
       build_scene_geometry(load_scene_file(stress_path("collinear_edges.yaml")));
   for (double phi : {3e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
