@@ -27,14 +27,6 @@ void expect_lens_on_ball_graph(const char* file) {
 TEST(StressEdges, ModerateEdgeAgainstABall) { expect_lens_on_ball_graph("weak_edge_sine_0.1.yaml"); }
 
 TEST(StressEdges, WeakEdgeAgainstABall) {
-  GTEST_SKIP() << "generator defect (engine/generator transition motions): with the faces' "
-                  "normals 0.567 degrees apart at the edge (sine 9.9e-3, above "
-                  "tangential_sine 1e-3), {(eA-fB, 1)} is never reached: every motion from "
-                  "fS-fB or fC-fB reports \"contact eA-fB became fC-fB (f-f)\" (resp. fS-fB), "
-                  "i.e. the contact crosses the edge's 0.57-degree normal cone within one step "
-                  "and the event is not located; slidingB \"did not reach the target within "
-                  "329 steps\". The graph has 2 states and no links. At sine 0.03 and 0.1 the "
-                  "graph is right.";
   expect_lens_on_ball_graph("weak_edge.yaml");
 }
 
