@@ -57,7 +57,12 @@ PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, El
     if (system.size() > 0) {
       const NewtonResult r = solve_square_system(system, z, options);
       out.iterations = r.iterations;
-      if (!r.converged) return out;
+      if (!r.converged) {
+        // nearly parallel rims off their touch: a descent on |D|^2 (pair_crossing.cc)
+        if (type != PtcType::EECross) return out;
+        z = system.initial(start_A, start_B);
+        if (!system.descend_crossing(z, options)) return out;
+      }
     }
     PairPoints p = system.points(z);
     // nearly parallel rims: the common slide along them needs the polish (pair_crossing.cc)

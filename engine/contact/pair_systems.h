@@ -69,6 +69,10 @@ class PairSystem final : public SquareSystem {
   // where the common slide of both points along the rims is poorly conditioned in the Newton
   // system (pair_crossing.cc). Moves the points by at most max_shift in all.
   void polish_crossing(SmallVector& z, double max_shift, int max_iterations) const;
+  // e-e-cross only: minimises |x_A - p_B|^2 over the two curves from z by Newton steps in the
+  // arc lengths, halved until the distance drops (for starts where solve_square_system
+  // fails). True when the common-perpendicular rows are below options.residual.
+  bool descend_crossing(SmallVector& z, const NewtonOptions& options) const;
 
  private:
   void evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
