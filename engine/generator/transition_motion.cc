@@ -6,6 +6,7 @@
 
 #include "engine/contact/contact_context.h"
 #include "engine/contact/contact_formation.h"
+#include "engine/contact/element_geometry.h"
 #include "engine/generator/motion_drive.h"
 
 namespace pcsg {
@@ -49,6 +50,19 @@ constexpr int kMaxStalledSteps = 20;
 constexpr double kBracketMargin = 1.25;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
+
+// The contact normal that a change on one side turns toward the new element's normal: the
+// outward normal of that side's solid, in its frame (normal_in_A for A, normal_B for B). An
+// e-e-touch has no normal of its own: normal_B is B's rim bisector by convention, which no
+// motion of A turns, so for a change on B's side it is A's rim bisector, reversed (the drive
+// then turns A's rim cone about the tangent until the new face's normal lies in it).
+Eigen::Vector3d changing_side_normal(const SceneGeometry& scene, const Pose& X,
+                                     const PointContact& c, bool on_a) {
+  if (on_a) return normal_in_A(X, c);
+  if (c.type != PtcType::EETouch) return c.normal_B;
+  const Eigen::Vector3d t_a = edge_jet(scene.A, c.a.index, c.p_A).tangent;
+  return -(X.rotation() * outward_bisector(scene.A, element_surfaces(scene.A, c.a), c.p_A, t_a));
+}
 
 // Tracks that keep every given contact (connectivity motions and upward probes).
 std::vector<Track> keep_all(const std::vector<PointContact>& contacts) {
@@ -122,6 +136,9 @@ class Motion {
   // region across the far side, settles it in the middle of the region along the step.
   bool settle_within_step(const Observation& obs, const TwistFrame& F, const Twist& s,
                           double lo);
+  // Changing e-e-touch contacts bound for a face continue as the new pair as soon as that
+  // pair is a contact at the touch point.
+  void leave_touches();
   MotionOutcome fail(const std::string& why) const {
     MotionOutcome o;
     o.reason = why;
@@ -204,7 +221,7 @@ double Motion::distance_to_goal(const Track& t) const {
       best = std::min(best, (cs.point - x).norm());
     return best;
   }
-  const Eigen::Vector3d n = on_a ? normal_in_A(X_, t.c) : Eigen::Vector3d(t.c.normal_B);
+  const Eigen::Vector3d n = changing_side_normal(scene_, X_, t.c, on_a);
   const double cosine = std::clamp(n.dot(cone_middle(S, goal, x)), -1.0, 1.0);
   return size_ * std::acos(cosine);
 }
@@ -387,10 +404,19 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   const ElementId current = on_a ? t.c.a : t.c.b;
   const ElementId goal = on_a ? t.plan.new_a : t.plan.new_b;
   const Eigen::Vector3d x = on_a ? t.c.p_A : t.c.p_B;
-  const Eigen::Vector3d n = on_a ? normal_in_A(X_, t.c) : Eigen::Vector3d(t.c.normal_B);
+  const Eigen::Vector3d n = changing_side_normal(scene_, X_, t.c, on_a);
   const Eigen::Matrix<double, 3, 6>& dx = on_a ? rates->point_A : rates->point_B;
   const Eigen::Matrix<double, 3, 6>& dx_other = on_a ? rates->point_B : rates->point_A;
-  const Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * size_;
+  Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * size_;
+  if (!on_a && t.c.type == PtcType::EETouch) {
+    // A's rim bisector turns with A (the touch's normal_B, B's own bisector, does not)
+    const double eps = scene_.tol.rate_step;
+    for (int i = 0; i < 6; ++i) {
+      Twist e = Twist::Zero();
+      e[i] = eps;
+      dn.col(i) = (changing_side_normal(scene_, F.apply(X_, e), t.c, false) - n) / eps * size_;
+    }
+  }
   // Toward a lower-dimensional element (face to edge, edge to vertex) or away from one: in
   // the drive phase from the current element to the goal; when settling, from the element the
   // contact left to the one it is on now.
@@ -462,6 +488,46 @@ bool Motion::settle_within_step(const Observation& obs, const TwistFrame& F, con
   return true;
 }
 
+void Motion::leave_touches() {
+  // Two rims touching with collinear tangents: the touch point is also a stationary point, on
+  // the face's boundary, of each pair of one rim and a face of the other rim (the normal
+  // plane of the common tangent holds every such face normal), so each neighbouring f-e or
+  // e-f contact starts right there. Keeping the touch instead cannot reach them: its normal is
+  // not fixed by the geometry, and turning A about the tangent keeps the rims touching
+  // (collinear_edges.yaml: "contact eA-eB makes no progress toward fA1-eB"). The contact
+  // continues as the new pair as soon as that pair is a contact (the face's normal in the
+  // other rim's cone), and settling slides it into the face.
+  for (Track& t : tracks_) {
+    if (t.plan.action != ContactAction::Change || t.phase != Phase::Drive ||
+        t.c.type != PtcType::EETouch)
+      continue;
+    const ElementId current = t.plan.changes_a ? t.c.a : t.c.b;
+    const ElementId goal = t.plan.changes_a ? t.plan.new_a : t.plan.new_b;
+    if (element_dimension(goal) <= element_dimension(current)) continue;
+    ++counters_.pair_solves;
+    auto next = track_pair(scene_, X_, t.plan.new_a, t.plan.new_b, t.plan.new_type, t.c.p_A,
+                           t.c.p_B);
+    if (!next || std::abs(next->gap) > scene_.tol.contact_gap ||
+        (next->point_B - t.c.point_B).norm() > scene_.tol.distinct_points)
+      continue;
+    // the new face's normal must lie in the other rim's normal cone; until it does, the drive
+    // turns that cone toward it about the tangent (changing_side_normal)
+    const bool other_is_b = t.plan.changes_a;
+    const Solid& other = other_is_b ? scene_.B : scene_.A;
+    const ElementId other_el = other_is_b ? next->b : next->a;
+    // (outward normals: normal_B out of B, normal_in_A out of A)
+    const Eigen::Vector3d dir =
+        other_is_b ? Eigen::Vector3d(next->normal_B) : normal_in_A(X_, *next);
+    const ConeFit fit = fit_normal_cone(other, element_surfaces(other, other_el),
+                                        other_is_b ? next->p_B : next->p_A, dir);
+    if (fit.distance > scene_.tol.normal_cone) continue;
+    t.left = current;
+    t.c = *next;
+    t.phase = Phase::Settle;
+    t.settle_left = kSettleSteps;
+  }
+}
+
 void Motion::emit(const char* phase, const std::vector<PointContact>& contacts,
                   const Observation* collision) const {
   if (!observer_) return;
@@ -480,6 +546,7 @@ void Motion::emit(const char* phase, const std::vector<PointContact>& contacts,
 MotionOutcome Motion::run() {
   emit("drive", {});
   while (step_ < max_steps_) {
+    leave_touches();
     bool all_done = true;
     for (const Track& t : tracks_)
       if (t.plan.action != ContactAction::Keep && t.phase != Phase::Done) all_done = false;
