@@ -70,8 +70,9 @@ class PairSystem final : public SquareSystem {
   // system (pair_crossing.cc). Moves the points by at most max_shift in all.
   void polish_crossing(SmallVector& z, double max_shift, int max_iterations) const;
   // e-e-cross only: minimises |x_A - p_B|^2 over the two curves from z by Newton steps in the
-  // arc lengths, halved until the distance drops (for starts where solve_square_system
-  // fails). True when the common-perpendicular rows are below options.residual.
+  // arc lengths, halved until the distance drops, until it drops no more (for starts where
+  // solve_square_system fails). True when the common-perpendicular rows are then below
+  // options.residual.
   bool descend_crossing(SmallVector& z, const NewtonOptions& options) const;
 
  private:
