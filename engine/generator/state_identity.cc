@@ -61,17 +61,25 @@ Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& 
 }  // namespace
 
 SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
-  return {axis_of_revolution(scene.B, scene.tol), axis_of_revolution(scene.A, scene.tol)};
+  SceneSymmetry s{axis_of_revolution(scene.B, scene.tol), axis_of_revolution(scene.A, scene.tol),
+                  {}};
+  s.half_turns_A = half_turn_axes(scene.A, scene.tol, s.A);
+  return s;
 }
 
 bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
                       const ContactFormation& cf, MotionCounters& counters,
                       const SceneSymmetry& symmetry, int midpoint_levels) {
-  if (moved_either_way(scene, a, b, cf, counters)) return true;
-  if (symmetry.A || symmetry.B) {
-    // The turns keep every contact: the turned pose is in a's region by construction.
-    const Pose t = aligned_by_symmetry(scene, a, b, symmetry);
-    if (moved_either_way(scene, t, b, cf, counters)) return true;
+  // b and b turned about each half-turn axis of A: the same configuration
+  std::vector<Pose> targets = {b};
+  for (const SymmetryAxis& h : symmetry.half_turns_A) targets.push_back(turned_about_A(b, h, M_PI));
+  for (const Pose& target : targets) {
+    if (moved_either_way(scene, a, target, cf, counters)) return true;
+    if (symmetry.A || symmetry.B) {
+      // The turns keep every contact: the turned pose is in a's region by construction.
+      const Pose t = aligned_by_symmetry(scene, a, target, symmetry);
+      if (moved_either_way(scene, t, target, cf, counters)) return true;
+    }
   }
   if (midpoint_levels <= 0) return false;
   // A waypoint: the pose halfway, moved onto the CF (the projection checks it by detection:

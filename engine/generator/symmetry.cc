@@ -84,6 +84,57 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
   return axis;
 }
 
+std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
+                                         const std::optional<SymmetryAxis>& revolution) {
+  std::vector<SymmetryAxis> out;
+  if (S.surfaces.empty() || S.bbox.isEmpty()) return out;
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j)
+      for (int k = 0; k < kGrid; ++k) {
+        const Eigen::Vector3d f((i + 0.5) / kGrid, (j + 0.5) / kGrid, (k + 0.5) / kGrid);
+        points.push_back(S.bbox.min() + f.cwiseProduct(S.bbox.sizes()));
+      }
+  std::vector<Eigen::Vector3d> centres = {Eigen::Vector3d::Zero()};
+  if (S.bbox.center().norm() > tol.distinct_points) centres.push_back(S.bbox.center());
+  for (const Eigen::Vector3d& c : centres)
+    for (int a = 0; a < 3; ++a) {
+      SymmetryAxis axis;
+      axis.point = c;
+      axis.direction = Eigen::Vector3d::Unit(a);
+      // parallel to the axis of revolution: the continuous turn covers it
+      if (revolution && revolution->direction.cross(axis.direction).norm() < 1e-6) continue;
+      const Eigen::Matrix3d R = rotation_about(axis.direction, M_PI);
+      auto turned = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); };
+      bool ok = true;
+      // every surface onto itself
+      for (const Polynomial& g : S.surfaces) {
+        double scale = 0, worst = 0;
+        for (const Eigen::Vector3d& p : points) {
+          const double v = g.value(p);
+          scale = std::max(scale, std::abs(v));
+          worst = std::max(worst, std::abs(v - g.value(turned(p))));
+        }
+        ok = ok && worst <= tol.symmetry_relative * scale;
+      }
+      // every face, edge and vertex onto itself (one surface may hold several patches, two
+      // surfaces several curves)
+      const double near = tol.distinct_points;
+      for (size_t f = 0; ok && f < S.faces.size(); ++f)
+        ok = S.face_at(S.faces[f].surface, turned(S.faces[f].interior_point), near) ==
+             static_cast<int>(f);
+      for (size_t e = 0; ok && e < S.edges.size(); ++e) {
+        const Edge& E = S.edges[e];
+        if (E.samples.empty()) continue;
+        ok = S.edge_at(E.surface1, E.surface2, turned(E.samples[E.samples.size() / 2].point),
+                       near) == static_cast<int>(e);
+      }
+      for (const Vertex& v : S.vertices) ok = ok && (turned(v.point) - v.point).norm() <= near;
+      if (ok) out.push_back(axis);
+    }
+  return out;
+}
+
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle) {
   const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, axis_B.direction));
   Pose Y;

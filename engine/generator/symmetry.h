@@ -6,6 +6,7 @@
 // exchange elements). That is a CF-compliant motion (paper Section II-C) with no steps to
 // check.
 #include <optional>
+#include <vector>
 
 #include "engine/core/pose.h"
 #include "engine/core/tolerances.h"
@@ -25,6 +26,17 @@ struct SymmetryAxis {
 // a grid of points over the solid's box. Confirmed by rotating each polynomial by one radian
 // (tol.symmetry_relative). nullopt when there is no such axis, or more than one (a ball).
 std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances& tol);
+
+// The axes of the solid's half-turn symmetries: turns by pi that map every surface onto
+// itself (checked like the axis of revolution, on a grid, to tol.symmetry_relative) and every
+// face, edge and vertex onto itself, so that the turned solid has the same elements where they
+// were. Candidates are the coordinate axes through the solid's origin and through its box
+// centre (solids are written in frames that show their symmetry, like Example 1's ellipsoid,
+// whose three axes are all half-turn axes). Axes along `revolution` (covered by the
+// continuous turn) are left out. A witness X and X turned about such an axis by pi (X R) are
+// the same configuration of A, so either stands for it.
+std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
+                                         const std::optional<SymmetryAxis>& revolution);
 
 // The pose reached by turning A about B's axis `axis_B` by `angle` (radians): X' = R X.
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle);

@@ -156,19 +156,31 @@ TEST(Generator, GraphIsIdenticalUnderScaling) {
   }
 }
 
-TEST(Generator, GraphIsIdenticalUnderRigidMotion) {
-  GTEST_SKIP() << "open defect (docs/paper-comparison.md): Example 1 untransformed has 9 "
-                  "states (8 CFs, 33 links) with two states of {(fA-e1, 2)} whose witnesses "
-                  "no CF-compliant motion tried joins (the straight and contacts-first "
-                  "travels run into the dish f1 next to a rim contact); with B's frame moved "
-                  "(transformed_copies) {(fA-e1, 2)} is reached once, from a second witness "
-                  "of the seed, giving 8 states (8 CFs, 26 links). Same CFs; the multiset "
-                  "and the links differ by that second region.";
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  const Generated ref = generate(spec);
-  const Generated g = generate(transformed_copies(spec).back());
-  EXPECT_EQ(state_multiset(g), state_multiset(ref));
-  EXPECT_EQ(link_multiset(g), link_multiset(ref));
+// Example 1 and its copy with B's frame moved (transformed_copies), generated once for the
+// two tests below (~30 s).
+const std::pair<Generated, Generated>& rigidly_moved_example1() {
+  static const std::pair<Generated, Generated> g = [] {
+    const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+    return std::pair<Generated, Generated>{generate(spec), generate(transformed_copies(spec).back())};
+  }();
+  return g;
+}
+
+TEST(Generator, StatesAreIdenticalUnderRigidMotion) {
+  const auto& [ref, g] = rigidly_moved_example1();
+  EXPECT_EQ(state_multiset(g), state_multiset(ref))
+      << "got:\n" << testing::join(state_multiset(g));
+}
+
+TEST(Generator, LinksAreIdenticalUnderRigidMotion) {
+  GTEST_SKIP() << "open defect (docs/paper-comparison.md, feasibility depends on the witness): "
+                  "both runs have the same 8 states (test above); the moved run lacks one of "
+                  "the 27 links, {(fA-e1, 1), (fA-f1, 1)} -LN-> {(fA-e1, 2)}. Untransformed, "
+                  "the third motion tried (combined+rotation, turn +45 deg) reaches "
+                  "{(fA-e1, 2)} in 14 steps; in the far, rotated scene (stress_test.cc) the "
+                  "same link is missing and each of its four motions meets the dish f1.";
+  const auto& [ref, g] = rigidly_moved_example1();
+  EXPECT_EQ(link_multiset(g), link_multiset(ref)) << "got:\n" << testing::join(link_multiset(g));
 }
 
 }  // namespace

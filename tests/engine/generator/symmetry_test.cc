@@ -77,5 +77,49 @@ TEST(Symmetry, TurningAboutBsAxisKeepsTheContacts) {
   }
 }
 
+// The ellipsoid's three axes are half-turn axes (x, y, z each enter squared); the torus's x
+// and y axes too (its z axis, of revolution, is left out: the continuous turn covers it).
+// The lens's half turns exchange its caps fA1 and fA2, and the three-sphere lens's exchange
+// two spheres: none maps every element onto itself.
+TEST(Symmetry, HalfTurnAxesOfTheShippedScenes) {
+  const SceneGeometry ex1 = scene("example1.yaml"), ex2 = scene("example2.yaml");
+  const SceneGeometry torus = scene("torus.yaml"), three = scene("three_spheres.yaml");
+  auto directions = [](const SceneGeometry& g) {
+    std::vector<Eigen::Vector3d> out;
+    for (const SymmetryAxis& h : SceneSymmetry::of(g).half_turns_A) {
+      EXPECT_LE(h.point.norm(), g.tol.distinct_points);
+      out.push_back(h.direction);
+    }
+    return out;
+  };
+  const std::vector<Eigen::Vector3d> e1 = directions(ex1), t = directions(torus);
+  ASSERT_EQ(e1.size(), 3u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(e1[k], Eigen::Vector3d::Unit(k));
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[0], Eigen::Vector3d::UnitX());
+  EXPECT_EQ(t[1], Eigen::Vector3d::UnitY());
+  EXPECT_TRUE(directions(ex2).empty());
+  EXPECT_TRUE(directions(three).empty());
+}
+
+// Two witnesses of {(fA-e1, 2)} (the ellipsoid across the rim) that Example 1's run reached
+// from {(fA-f1, 2)} and from {(fA-e1, 1), (fA-f1, 1)}: they differ by about a half turn about
+// the ellipsoid's long axis (z), and the joining test proves them one state by a travel
+// toward the second turned by pi (docs/paper-comparison.md).
+TEST(Symmetry, HalfTurnJoinsExample1sTwoRimWitnesses) {
+  const SceneGeometry ex1 = scene("example1.yaml");
+  const Pose a = parse_pose(
+      "-1.2458376367372204 1.4932461536876056 2.770980613225761 0.4727947445479537 "
+      "0.10082561465575791 0.699850742423232 0.5258405302815436");
+  const Pose b = parse_pose(
+      "-1.35671726510476 1.7453745777250886 3.163909075691247 0.6906250200450014 "
+      "-0.602534669516488 0.1981324817804587 -0.3474659312537192");
+  const ContactFormation cf = ContactFormation::of(detect_contacts(ex1, a).contacts);
+  ASSERT_EQ(cf.str(ex1), "{(fA-e1, 2)}");
+  ASSERT_TRUE(ContactFormation::of(detect_contacts(ex1, b).contacts) == cf);
+  MotionCounters counters;
+  EXPECT_TRUE(joined_within_cf(ex1, a, b, cf, counters, SceneSymmetry::of(ex1)));
+}
+
 }  // namespace
 }  // namespace pcsg
