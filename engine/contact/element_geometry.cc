@@ -181,19 +181,21 @@ Violation worst_violation(const Solid& solid, const SurfaceSet& set, const Eigen
 
 Violation bounding_violation(const Solid& solid, const SurfaceSet& set, const Eigen::Vector3d& p,
                              double on_boundary, double tangential_sine) {
-  // orthonormal basis of the span of the set's unit normals at p
+  // Only faces and edges: a vertex's normals span every direction, and a further surface
+  // through a vertex is a degenerate vertex, not a tangency.
+  if (set.size == 0 || set.size >= 3) return worst_violation(solid, set, p);
+  // orthonormal basis of the span of the set's normals at p
   Eigen::Matrix<double, 3, Eigen::Dynamic> N(3, set.size);
   for (int k = 0; k < set.size; ++k) N.col(k) = solid.surfaces[set.index[k]].gradient(p);
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(N);
+  const Eigen::MatrixXd Q =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(N).householderQ() * Eigen::MatrixXd::Identity(3, set.size);
   SurfaceSet skip = set;
   for (;;) {
     const Violation v = worst_violation(solid, skip, p);
-    if (v.surface < 0 || std::abs(v.distance) > on_boundary || set.size == 0 ||
-        skip.size == SurfaceSet::kMax)
+    if (v.surface < 0 || std::abs(v.distance) > on_boundary || skip.size == SurfaceSet::kMax)
       return v;
     const Eigen::Vector3d n = solid.surfaces[v.surface].gradient(p).normalized();
     // distance of the unit normal from the span: the sine of its angle to it
-    const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(3, set.size);
     const double sine = (n - Q * (Q.transpose() * n)).norm();
     if (!(sine < tangential_sine)) return v;
     skip.add(v.surface);

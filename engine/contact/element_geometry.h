@@ -86,10 +86,10 @@ struct Violation {
 };
 Violation worst_violation(const Solid& solid, const SurfaceSet& set, const Eigen::Vector3d& p);
 
-// worst_violation for deciding whether p leaves the element on the surfaces of `set`: a
+// worst_violation for deciding whether p leaves the face or edge on the surfaces of `set`: a
 // surface through p (within `on_boundary`) whose normal there lies in the span of the set's
 // normals (sine below `tangential_sine`) touches the element tangentially and does not bound
-// it, so it is passed over. (B-reps have no edge where surfaces meet tangentially, see
+// it, so it is passed over (for a vertex's set, worst_violation itself). (B-reps have no edge where surfaces meet tangentially, see
 // brep_builder: Example 1's sphere x^2 + y^2 + z^2 = 16 touches the paraboloid f3 at its
 // vertex (0, 0, -4), an interior point of f3 far from edge e2, scenes/stress/
 // pole_on_bottom_tip.yaml.)
