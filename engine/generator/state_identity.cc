@@ -62,17 +62,19 @@ Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& 
 
 SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
   SceneSymmetry s{axis_of_revolution(scene.B, scene.tol), axis_of_revolution(scene.A, scene.tol),
-                  {}};
+                  {}, {}};
   s.half_turns_A = half_turn_axes(scene.A, scene.tol, s.A);
+  s.half_turns_B = half_turn_axes(scene.B, scene.tol, s.B);
   return s;
 }
 
 bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
                       const ContactFormation& cf, MotionCounters& counters,
                       const SceneSymmetry& symmetry, int midpoint_levels) {
-  // b and b turned about each half-turn axis of A: the same configuration
+  // b and b turned about each half-turn axis of A or of B: the same configuration
   std::vector<Pose> targets = {b};
   for (const SymmetryAxis& h : symmetry.half_turns_A) targets.push_back(turned_about_A(b, h, M_PI));
+  for (const SymmetryAxis& h : symmetry.half_turns_B) targets.push_back(turned_about_B(b, h, M_PI));
   for (const Pose& target : targets) {
     if (moved_either_way(scene, a, target, cf, counters)) return true;
     if (symmetry.A || symmetry.B) {

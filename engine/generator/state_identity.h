@@ -30,6 +30,7 @@ struct SceneSymmetry {
   std::optional<SymmetryAxis> B;  // in B's frame
   std::optional<SymmetryAxis> A;  // in A's frame
   std::vector<SymmetryAxis> half_turns_A;  // in A's frame (half_turn_axes)
+  std::vector<SymmetryAxis> half_turns_B;  // in B's frame
   static SceneSymmetry of(const SceneGeometry& scene);
 };
 
@@ -38,8 +39,8 @@ struct SceneSymmetry {
 //  2. when B (A) is a solid of revolution: a turned about B's axis until A's centre is over
 //     b's, then about A's own axis until the orientations agree best (both turns keep every
 //     contact, symmetry.h), then 1. from there;
-//  2'. for each half-turn symmetry of A: 1. and 2. toward b turned about its axis by pi, the
-//     same configuration as b with A's points relabelled (Example 1's ellipsoid across the
+//  2'. for each half-turn symmetry of A (of B): 1. and 2. toward b turned about its axis by
+//     pi, the same configuration as b with A's (B's) points relabelled (Example 1's ellipsoid across the
 //     rim: two witnesses that differ by a half turn about its long axis are joined in a few
 //     steps, while every travel toward b itself runs into the dish);
 //  3. with `midpoint_levels` > 0, the pose halfway between them (positions averaged,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/generator/state_identity.h"
+#include "engine/scene/scene_swap.h"
 #include "generator_test_support.h"
 
 namespace pcsg {
@@ -100,6 +101,14 @@ TEST(Symmetry, HalfTurnAxesOfTheShippedScenes) {
   EXPECT_EQ(t[1], Eigen::Vector3d::UnitY());
   EXPECT_TRUE(directions(ex2).empty());
   EXPECT_TRUE(directions(three).empty());
+  // B of every shipped scene, the bowl, has none (a half turn across its axis turns it
+  // over); swapped, the ellipsoid is B and its three axes serve there.
+  EXPECT_TRUE(SceneSymmetry::of(ex1).half_turns_B.empty());
+  const SceneGeometry swapped = build_scene_geometry(
+      swap_objects(load_scene_file(testing::scene_path("example1.yaml"))));
+  const SceneSymmetry sym = SceneSymmetry::of(swapped);
+  EXPECT_TRUE(sym.half_turns_A.empty());
+  EXPECT_EQ(sym.half_turns_B.size(), 3u);
 }
 
 // Two witnesses of {(fA-e1, 2)} (the ellipsoid across the rim) that Example 1's run reached
