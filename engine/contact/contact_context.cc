@@ -143,6 +143,81 @@ bool overlap_within(const Eigen::Matrix3d& R0, const Eigen::Vector3d& T0, const 
   return !fcl::obbDisjoint(R, T, Eigen::Vector3d(b1.extent.array() + margin), b2.extent);
 }
 
+// Relative slack of the ball test of the traversals over round-off (~1e-16 of the
+// squared distances and coordinates): two balls are taken apart only when clearly so.
+constexpr double kBallRoundOff = 1e-9;
+
+// The first six tests of FCL's obbDisjoint (box B placed in box A's frame by R, T; extents
+// a, b; the same 1e-6 slack): whether a face axis of either box separates them. Looser than
+// the full test (it skips the nine edge-edge axes), so it prunes a traversal less, never more.
+bool disjoint_on_face_axes(const Eigen::Matrix3d& B, const Eigen::Vector3d& T,
+                           const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  constexpr double reps = 1e-6;  // FCL's slack on the rotation's entries
+  const Eigen::Matrix3d Bf = (B.cwiseAbs().array() + reps).matrix();
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(T[i]) > a[i] + Bf.row(i).dot(b)) return true;
+  for (int j = 0; j < 3; ++j)
+    if (std::abs(B.col(j).dot(T)) > b[j] + Bf.col(j).dot(a)) return true;
+  return false;
+}
+
+// Whether boxes b1 and b2 (b2 placed in b1's frame by R0, T0; `reach` the sum of their
+// enclosing balls' radii) are more than `margin` apart: by their balls (beyond round-off) or
+// on a face axis of either box (FCL's slack, b1 grown by the margin).
+bool apart_by(const Eigen::Matrix3d& R0, const Eigen::Vector3d& T0, const fcl::OBBd& b1,
+              const fcl::OBBd& b2, double reach, double margin) {
+  const Eigen::Vector3d c2 = R0 * b2.To + T0;
+  const Eigen::Vector3d d = c2 - b1.To;
+  const double r = reach + margin;
+  if (d.squaredNorm() >
+      r * r * (1 + kBallRoundOff) + kBallRoundOff * (c2.squaredNorm() + b1.To.squaredNorm()))
+    return true;
+  const Eigen::Matrix3d R = b1.axis.transpose() * (R0 * b2.axis);
+  const Eigen::Vector3d T = b1.axis.transpose() * d;
+  return disjoint_on_face_axes(R, T, Eigen::Vector3d(b1.extent.array() + margin), b2.extent);
+}
+
+// Whether all three points lie clearly on one side of the plane of triangle (p1, p2, p3): by
+// more than kPlaneRoundOff of the lengths involved, far above the round-off of the products.
+constexpr double kPlaneRoundOff = 1e-9;
+bool one_side_of_plane(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                       const Eigen::Vector3d& p3, const Eigen::Vector3d& q1,
+                       const Eigen::Vector3d& q2, const Eigen::Vector3d& q3) {
+  const Eigen::Vector3d e1 = p2 - p1, e2 = p3 - p1;
+  const Eigen::Vector3d n = e1.cross(e2);
+  const Eigen::Vector3d r1 = q1 - p1, r2 = q2 - p1, r3 = q3 - p1;
+  const double d1 = n.dot(r1), d2 = n.dot(r2), d3 = n.dot(r3);
+  const double reach = e1.norm() + e2.norm() +
+                       std::max({r1.norm(), r2.norm(), r3.norm()});
+  const double slack = kPlaneRoundOff * n.norm() * reach;
+  return (d1 > slack && d2 > slack && d3 > slack) || (d1 < -slack && d2 < -slack && d3 < -slack);
+}
+
+// Whether leaves a of A and b of B hold intersecting triangles (B placed in A's frame by R, T;
+// Rab, Tab place b's box in a's box frame): FCL's verdict, intersect_Triangle, after two
+// cheaper tests that only reject pairs it rejects too (boxes apart on a face axis, triangles
+// apart across a plane). FCL's full test of the leaves' boxes is left out: boxes holding
+// intersecting triangles overlap, so it rejects only pairs intersect_Triangle rejects.
+bool leaf_pair_intersects(const Model& A, const Model& B, int a, int b,
+                          const Eigen::Matrix3d& R, const Eigen::Vector3d& T,
+                          const Eigen::Matrix3d& Rab, const Eigen::Vector3d& Tab) {
+  const auto& na = A.getBV(a);
+  const auto& nb = B.getBV(b);
+  if (disjoint_on_face_axes(Rab, Tab, na.bv.obb.extent, nb.bv.obb.extent)) return false;
+  const fcl::Triangle& ta = A.tri_indices[na.primitiveId()];
+  const fcl::Triangle& tb = B.tri_indices[nb.primitiveId()];
+  const Eigen::Vector3d& p1 = A.vertices[ta[0]];
+  const Eigen::Vector3d& p2 = A.vertices[ta[1]];
+  const Eigen::Vector3d& p3 = A.vertices[ta[2]];
+  const Eigen::Vector3d q1 = R * B.vertices[tb[0]] + T;
+  const Eigen::Vector3d q2 = R * B.vertices[tb[1]] + T;
+  const Eigen::Vector3d q3 = R * B.vertices[tb[2]] + T;
+  if (one_side_of_plane(p1, p2, p3, q1, q2, q3) || one_side_of_plane(q1, q2, q3, p1, p2, p3))
+    return false;
+  return fcl::detail::Intersect<double>::intersect_Triangle(
+      p1, p2, p3, B.vertices[tb[0]], B.vertices[tb[1]], B.vertices[tb[2]], R, T);
+}
+
 // Relative growth of the nearby-pairs margin over the displacement it must cover: round-off of
 // the box tests is ~1e-15 relative, so 1e-6 covers it with room while adding no pairs.
 constexpr double kMarginRoundOff = 1e-6;
@@ -154,6 +229,8 @@ constexpr size_t kMaxNearbyLeaves = 20000;
 
 struct ContactContext::Models {
   std::shared_ptr<Model> A, B;
+  // Per BVH node, the radius of a ball about its box's centre holding the box.
+  std::vector<double> ball_A, ball_B;
   // A ball about this point (A's frame) holds A's inflated mesh.
   Eigen::Vector3d centre_A = Eigen::Vector3d::Zero();
   double radius_A = 0;
@@ -174,6 +251,10 @@ ContactContext::ContactContext(const SceneGeometry& scene, double band)
                            kOnSurfaceFraction * scene.mesh_A.chordal_error);
   models_->B = build_model(scene.B, scene.mesh_B, delta_B,
                            kOnSurfaceFraction * scene.mesh_B.chordal_error);
+  for (int i = 0; i < models_->A->getNumBVs(); ++i)
+    models_->ball_A.push_back(models_->A->getBV(i).bv.obb.extent.norm());
+  for (int i = 0; i < models_->B->getNumBVs(); ++i)
+    models_->ball_B.push_back(models_->B->getBV(i).bv.obb.extent.norm());
   Eigen::AlignedBox3d box_A;
   for (int i = 0; i < models_->A->num_vertices; ++i) box_A.extend(models_->A->vertices[i]);
   models_->centre_A = box_A.center();
@@ -187,6 +268,89 @@ ContactContext::~ContactContext() = default;
 bool ContactContext::overlapping_triangles(const Pose& X_BA,
                                            std::vector<std::pair<int, int>>& pairs,
                                            int max_pairs) const {
+  // FCL's traversal (collisionRecurse with MeshCollisionTraversalNodeOBBRSS: depth-first, the
+  // larger box split first, left child first; a leaf pair reported when the leaves' boxes
+  // overlap and intersect_Triangle says so), with savings that change no verdict: only the
+  // pruning of inner pairs differs, and it stays conservative (a pair of triangles that
+  // intersect has a common point in every box above them, so no test used here separates
+  // their ancestors), while each leaf pair gets FCL's own tests. Each of B's boxes is placed
+  // in A's frame once per query instead of once per box test; a pair of boxes whose
+  // enclosing balls lie apart (by more than round-off) is skipped before any box test; and
+  // inner pairs are tested on the boxes' face axes only: nearly all pairs that reach the box
+  // test overlap, and the nine edge-edge axes would cost more than the few pairs they
+  // separate.
+  Eigen::Matrix3d R;
+  Eigen::Vector3d T;
+  relative_transform(X_BA, R, T);
+  const Model& A = *models_->A;
+  const Model& B = *models_->B;
+  const std::vector<double>& ball_A = models_->ball_A;
+  const std::vector<double>& ball_B = models_->ball_B;
+  struct Placed {
+    Eigen::Matrix3d axis;  // R * box axes
+    Eigen::Vector3d To;    // R * centre + T
+  };
+  thread_local std::vector<Placed> placed;
+  thread_local std::vector<unsigned> placed_at;
+  thread_local unsigned query = 0;
+  if (placed_at.size() < static_cast<size_t>(B.getNumBVs())) {
+    placed.resize(B.getNumBVs());
+    placed_at.assign(B.getNumBVs(), 0);
+  }
+  if (++query == 0) {  // wrapped: start over
+    std::fill(placed_at.begin(), placed_at.end(), 0);
+    query = 1;
+  }
+  auto place = [&](int b) -> const Placed& {
+    Placed& p = placed[b];
+    if (placed_at[b] != query) {
+      const fcl::OBBd& obb = B.getBV(b).bv.obb;
+      p.axis = R * obb.axis;
+      p.To = R * obb.To + T;
+      placed_at[b] = query;
+    }
+    return p;
+  };
+  pairs.clear();
+  thread_local std::vector<std::pair<int, int>> stack;
+  stack.assign(1, {0, 0});
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    const auto& na = A.getBV(a);
+    const auto& nb = B.getBV(b);
+    const Placed& pb = place(b);
+    const fcl::OBBd& oa = na.bv.obb;
+    const Eigen::Vector3d d = pb.To - oa.To;
+    const double reach = ball_A[a] + ball_B[b];
+    if (d.squaredNorm() > reach * reach * (1 + kBallRoundOff) +
+                              kBallRoundOff * (pb.To.squaredNorm() + oa.To.squaredNorm()))
+      continue;
+    const bool la = na.isLeaf(), lb = nb.isLeaf();
+    const Eigen::Matrix3d Rab = oa.axis.transpose() * pb.axis;
+    const Eigen::Vector3d Tab = d.transpose() * oa.axis;
+    if (la && lb) {
+      if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) continue;
+      pairs.emplace_back(na.primitiveId(), nb.primitiveId());
+      if (static_cast<int>(pairs.size()) >= max_pairs) return false;
+      continue;
+    }
+    // FCL's overlap(R, T, OBB, OBB) on its face axes, with B's box placed once per query.
+    if (disjoint_on_face_axes(Rab, Tab, oa.extent, nb.bv.obb.extent)) continue;
+    if (lb || (!la && na.bv.size() > nb.bv.size())) {
+      stack.emplace_back(na.rightChild(), b);
+      stack.emplace_back(na.leftChild(), b);
+    } else {
+      stack.emplace_back(a, nb.rightChild());
+      stack.emplace_back(a, nb.leftChild());
+    }
+  }
+  return true;
+}
+
+bool ContactContext::overlapping_triangles_by_fcl(const Pose& X_BA,
+                                                  std::vector<std::pair<int, int>>& pairs,
+                                                  int max_pairs) const {
   fcl::CollisionRequestd request(static_cast<size_t>(max_pairs), false);
   fcl::CollisionResultd result;
   fcl::Transform3d tf_A = fcl::Transform3d::Identity();
@@ -228,8 +392,14 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
     stack.pop_back();
     const auto& na = A.getBV(a);
     const auto& nb = B.getBV(b);
-    if (!overlap_within(R, T, na.bv.obb, nb.bv.obb, grown)) continue;
-    if (na.isLeaf() && nb.isLeaf()) {
+    const bool leaves = na.isLeaf() && nb.isLeaf();
+    // Inner pairs: the looser ball and face-axis tests (as in overlapping_triangles), which
+    // only let more pairs through to the leaves; leaf pairs: the full grown box test.
+    if (leaves ? !overlap_within(R, T, na.bv.obb, nb.bv.obb, grown)
+               : apart_by(R, T, na.bv.obb, nb.bv.obb, models_->ball_A[a] + models_->ball_B[b],
+                          grown))
+      continue;
+    if (leaves) {
       if (out.leaves.size() >= kMaxNearbyLeaves) {
         out.complete = false;
         out.leaves.clear();
@@ -303,14 +473,11 @@ bool ContactContext::overlapping_triangles_near(const Pose& X_BA, const NearbyTr
   for (const auto& [a, b] : near.leaves) {
     const auto& na = A.getBV(a);
     const auto& nb = B.getBV(b);
-    // FCL's leaf test: the leaves' boxes, then the triangles.
-    if (!fcl::overlap(R, T, na.bv, nb.bv)) continue;
-    const fcl::Triangle& ta = A.tri_indices[na.primitiveId()];
-    const fcl::Triangle& tb = B.tri_indices[nb.primitiveId()];
-    if (!fcl::detail::Intersect<double>::intersect_Triangle(
-            A.vertices[ta[0]], A.vertices[ta[1]], A.vertices[ta[2]], B.vertices[tb[0]],
-            B.vertices[tb[1]], B.vertices[tb[2]], R, T))
-      continue;
+    // FCL's leaf test (with its cheaper rejections first).
+    const fcl::OBBd &oa = na.bv.obb, &ob = nb.bv.obb;
+    const Eigen::Matrix3d Rab = oa.axis.transpose() * (R * ob.axis);
+    const Eigen::Vector3d Tab = (R * ob.To + T - oa.To).transpose() * oa.axis;
+    if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) continue;
     if (static_cast<int>(pairs.size()) >= max_pairs - 1) return false;
     pairs.emplace_back(na.primitiveId(), nb.primitiveId());
   }

@@ -67,6 +67,10 @@ class ContactContext {
   // `max_pairs` of them; returns false when that cap cut the list short.
   bool overlapping_triangles(const Pose& X_BA, std::vector<std::pair<int, int>>& pairs,
                              int max_pairs) const;
+  // The same list from fcl::collide itself (the reference overlapping_triangles reproduces,
+  // pair for pair and in the same order, with fewer box tests; tests compare the two).
+  bool overlapping_triangles_by_fcl(const Pose& X_BA, std::vector<std::pair<int, int>>& pairs,
+                                    int max_pairs) const;
 
   // The pairs that may overlap at any pose within `margin` of X_BA (see NearbyTriangles).
   NearbyTriangles nearby_triangles(const Pose& X_BA, double margin) const;

@@ -132,6 +132,9 @@ class Builder {
   // from one point of a region may succeed from another); each new state found is grown.
   // Repeats until nothing new is found.
   void retry_from_other_witnesses();
+  // The motions retry_from_other_witnesses would try as the graph stands, run on the worker
+  // threads; keyed by (state, witness, CF). Empty with one thread.
+  std::map<std::tuple<int, int, ContactFormation>, TryResult> try_retries_ahead();
   void add_link(int from, int to, const std::string& motion);
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
@@ -379,6 +382,14 @@ void Builder::merge_united_states() {
 void Builder::retry_from_other_witnesses() {
   for (bool found_new = true; found_new && !cancelled();) {
     found_new = false;
+    // The motions this pass will try as things stand, run ahead on the worker threads (each
+    // is a pure function of the scene, the witness and the hypothesis). The pass below then
+    // walks them in its fixed order and uses a result only where it would have run the
+    // motion itself; a motion made moot by a state found earlier in the walk is dropped, and
+    // one the walk reaches unforeseen (a state or witness added meanwhile) runs there. So the
+    // graph and the counters do not depend on the thread count.
+    std::map<std::tuple<int, int, ContactFormation>, TryResult> ahead =
+        try_retries_ahead();
     for (size_t id = 0; id < graph_.states.size() && !cancelled(); ++id) {
       for (size_t k = 1; k < members_[id].size(); ++k) {
         State from = graph_.states[id];
@@ -391,7 +402,10 @@ void Builder::retry_from_other_witnesses() {
                           [&](const State& s) { return s.cf == h.cf; }))
             continue;
           if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
-          TryResult r = try_hypothesis(scene_, from, h, options_.measure_discretisation);
+          const auto found = ahead.find({static_cast<int>(id), static_cast<int>(k), h.cf});
+          TryResult r = found != ahead.end()
+                            ? std::move(found->second)
+                            : try_hypothesis(scene_, from, h, options_.measure_discretisation);
           counters_.merge(r.counters);
           for (Discovery& d : r.discovered)
             if (adds_one_contact(from.cf, d.cf)) discoveries_.push_back({from.id, std::move(d)});
@@ -407,6 +421,49 @@ void Builder::retry_from_other_witnesses() {
       }
     }
   }
+}
+
+std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries_ahead() {
+  struct Job {
+    int id, k;
+    Hypothesis h;
+  };
+  std::vector<Job> jobs;
+  std::set<std::tuple<int, int, ContactFormation>> listed;
+  for (size_t id = 0; id < graph_.states.size(); ++id)
+    for (size_t k = 1; k < members_[id].size(); ++k)
+      for (Hypothesis& h : hypothesise_ln(scene_, members_[id][k].contacts)) {
+        const std::tuple<int, int, ContactFormation> key{static_cast<int>(id),
+                                                         static_cast<int>(k), h.cf};
+        if (retried_.count(key) || !listed.insert(key).second) continue;
+        if (std::any_of(graph_.states.begin(), graph_.states.end(),
+                        [&](const State& s) { return s.cf == h.cf; }))
+          continue;
+        jobs.push_back({static_cast<int>(id), static_cast<int>(k), std::move(h)});
+      }
+  std::vector<TryResult> results(jobs.size());
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
+      if (cancelled()) break;
+      State from = graph_.states[jobs[j].id];
+      from.pose = members_[jobs[j].id][jobs[j].k].pose;
+      from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
+      results[j] = try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation);
+    }
+  };
+  const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
+  // One thread: nothing to run ahead, the walk runs each motion it needs (and only those).
+  if (threads < 2) return {};
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  std::map<std::tuple<int, int, ContactFormation>, TryResult> out;
+  if (cancelled()) return out;
+  for (size_t j = 0; j < jobs.size(); ++j)
+    out.emplace(std::make_tuple(jobs[j].id, jobs[j].k, jobs[j].h.cf), std::move(results[j]));
+  return out;
 }
 
 StateGraph Builder::run() {

@@ -150,5 +150,55 @@ TEST(NearbyTriangles, DetectionThroughThemIsIdenticalToAFullQuery) {
   EXPECT_EQ(detect_contacts(ctx, X, through).contacts.size(), 2u);
 }
 
+// overlapping_triangles is FCL's traversal with fewer box tests: along a motion through the
+// contacts (resting, pressed in, lifted off, tipped and slid) it must list exactly the pairs of
+// fcl::collide, in the same order; and under a cap, the same first pairs.
+TEST(OverlappingTriangles, ListExactlyFclsPairsAlongAMotion) {
+  const SceneGeometry scene = bowl_scene();
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  const double L = scene.tol.length_scale;
+  std::mt19937 rng(13);
+  std::vector<Pose> poses;
+  for (int k = 0; k <= 40; ++k) {
+    // Down into the dish and up out of it, turning about the long axis and sliding sideways.
+    const double s = k / 40.0;
+    Pose Y = X;
+    Y.position += Eigen::Vector3d(0.3 * s * L, 0, (0.04 * std::sin(2 * M_PI * s) - 0.01) * L);
+    Y.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.2 * s, Eigen::Vector3d::UnitX())) *
+                   X.quaternion;
+    poses.push_back(Y);
+  }
+  for (int k = 0; k < 12; ++k)
+    poses.push_back(pose_near(ctx, X, 0.05 * L, (k % 4 + 1) / 4.0, rng));
+  // And lifted off the dish.
+  for (int k = 1; k <= 3; ++k) {
+    Pose Y = poses.back();
+    Y.position.z() += 0.1 * k * L;
+    poses.push_back(Y);
+  }
+  int nonempty = 0, penetrating = 0;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    std::vector<std::pair<int, int>> ours, fcl;
+    const bool ours_all = ctx.overlapping_triangles(poses[k], ours, 1000000);
+    const bool fcl_all = ctx.overlapping_triangles_by_fcl(poses[k], fcl, 1000000);
+    ASSERT_TRUE(ours_all && fcl_all) << "pose " << k;
+    EXPECT_EQ(ours, fcl) << "pose " << k;
+    nonempty += !fcl.empty();
+    penetrating += detect_contacts(ctx, poses[k]).penetrating();
+    // Under a cap both stop after the same first pairs.
+    if (fcl.size() > 4) {
+      std::vector<std::pair<int, int>> capped_ours, capped_fcl;
+      EXPECT_FALSE(ctx.overlapping_triangles(poses[k], capped_ours, 4));
+      EXPECT_FALSE(ctx.overlapping_triangles_by_fcl(poses[k], capped_fcl, 4));
+      EXPECT_EQ(capped_ours, capped_fcl) << "pose " << k;
+    }
+  }
+  // The motion passes through contact, penetration and separation.
+  EXPECT_GE(nonempty, 20);
+  EXPECT_GE(penetrating, 5);
+  EXPECT_LT(nonempty, static_cast<int>(poses.size()));
+}
+
 }  // namespace
 }  // namespace pcsg
