@@ -177,22 +177,16 @@ TEST(StressBifurcation, BothContactsNextToTheMergeAreDetectedAndGrow) {
 // tip on the dish wall, {(fA-e1, 1), (fA-f1, 1)}. No state has a contact with f2 and another
 // element (a segment tangent to the sphere meets it once, and e1 and e2 lie on it).
 TEST(StressShapes, NeedleInTheDish) {
-  GTEST_SKIP() << "engine defect (engine/contact/contact_detection.cc, penetration of a body "
-                  "thinner than the meshes' inflation), measured: the graph from automatic "
-                  "seeds has the five single-contact states and 6 links, none of the three "
-                  "two-contact states and no link {(fA-e1, 1)} -- {(fA-f1, 1)}. The witness "
-                  "of {(fA-f1, 1)} (position (0.004023, 0.004020, -0.020405), quaternion "
-                  "(1.2548e-05, 0.421785, 0.421800, -0.802610)) has the needle through the "
-                  "dish: its axis crosses f1 at (1.1526, 1.1527, -0.5096), its tip (1.6966, "
-                  "1.6968, -0.7413) is strictly inside B and 7043 of its mesh vertices are "
-                  "(deepest 0.667), yet detect_contacts reports {(fA-f1, 1)} and no "
-                  "penetration. The 128 overlapping triangle pairs lie where the needle crosses "
-                  "B's inflated mesh, ~0.02 outside f1: no vertex of theirs is inside B (the "
-                  "needle's triangles, ~3e-3, are far smaller than the inflation), and the "
-                  "fA-f1 solve there stops at a stationary pair of gap -0.757 whose point on B "
-                  "is not inside the needle, so it is not taken as a penetration. The "
-                  "fA-f1 -> fA-e1 motion then reports \"collision: fA-f1 penetrate\" only "
-                  "where the detection first sees it (5.9e-3 deep at the bisected pose).";
+  GTEST_SKIP() << "generator defect (engine/generator, a needle thinner than the meshes' "
+                  "inflation), measured: the graph from automatic seeds has 6 states and 8 "
+                  "links: the five single-contact CFs with {(fA-e1, 1)} twice (two witnesses "
+                  "no CF-compliant motion tried joins), none of the three two-contact states "
+                  "and no link {(fA-e1, 1)} -- {(fA-f1, 1)}. Every witness now holds its CF "
+                  "without penetration: the {(fA-f1, 1)} witness used to have the needle "
+                  "through the dish (tip 0.667 deep in B, unseen because B's point of the "
+                  "fA-f1 pair, gap -0.757, is outside the needle); detect_contacts now takes "
+                  "either point of a negative-gap pair deeper than the penetration tolerance "
+                  "inside the other solid as a penetration (contact_detection.cc).";
   const Generated g = generate(load_scene_file(stress_path("needle_in_dish.yaml")));
   std::vector<std::string> states = kSingles;
   states.insert(states.end(), {"{(fA-f1, 2)}", "{(fA-e1, 2)}", "{(fA-e1, 1), (fA-f1, 1)}"});
