@@ -21,6 +21,18 @@ Eigen::Matrix3d rotation_about(const Eigen::Vector3d& u, double angle) {
   return Eigen::AngleAxisd(angle, u).toRotationMatrix();
 }
 
+// The centres of a kGrid^3 grid of cells over the solid's bounding box.
+std::vector<Eigen::Vector3d> box_grid(const Solid& S) {
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j)
+      for (int k = 0; k < kGrid; ++k) {
+        const Eigen::Vector3d f((i + 0.5) / kGrid, (j + 0.5) / kGrid, (k + 0.5) / kGrid);
+        points.push_back(S.bbox.min() + f.cwiseProduct(S.bbox.sizes()));
+      }
+  return points;
+}
+
 }  // namespace
 
 std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances& tol) {
@@ -29,13 +41,7 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
   // that the result does not depend on the scene's unit of length or placement.
   const Eigen::Vector3d centre = S.bbox.center();
   const double size = S.bbox.diagonal().norm();
-  std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j)
-      for (int k = 0; k < kGrid; ++k) {
-        const Eigen::Vector3d f((i + 0.5) / kGrid, (j + 0.5) / kGrid, (k + 0.5) / kGrid);
-        points.push_back(S.bbox.min() + f.cwiseProduct(S.bbox.sizes()));
-      }
+  const std::vector<Eigen::Vector3d> points = box_grid(S);
   std::vector<Eigen::Matrix<double, 1, 6>> rows;
   for (const Polynomial& g : S.surfaces)
     for (const Eigen::Vector3d& p : points) {
@@ -88,13 +94,7 @@ std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
                                          const std::optional<SymmetryAxis>& revolution) {
   std::vector<SymmetryAxis> out;
   if (S.surfaces.empty() || S.bbox.isEmpty()) return out;
-  std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j)
-      for (int k = 0; k < kGrid; ++k) {
-        const Eigen::Vector3d f((i + 0.5) / kGrid, (j + 0.5) / kGrid, (k + 0.5) / kGrid);
-        points.push_back(S.bbox.min() + f.cwiseProduct(S.bbox.sizes()));
-      }
+  const std::vector<Eigen::Vector3d> points = box_grid(S);
   std::vector<Eigen::Vector3d> centres = {Eigen::Vector3d::Zero()};
   if (S.bbox.center().norm() > tol.distinct_points) centres.push_back(S.bbox.center());
   for (const Eigen::Vector3d& c : centres)
