@@ -360,19 +360,26 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
     // point alone is deeper than the penetration tolerance inside the other solid: a surface
     // point of one solid in the other's interior proves that the interiors meet. The second
     // case is a body thinner than the meshes' inflation poked through a face (the needle in
-    // scenes/stress/needle_in_dish.yaml), where B's point of the pair is outside A.
+    // scenes/stress/needle_in_dish.yaml), where B's point of the pair is outside A; there the
+    // gap measures the far-apart pairing, not the penetration, so the point's own depth inside
+    // the other solid is reported instead.
     const Eigen::Vector3d pA_in_B = X_BA.apply(pc.p_A), pB_in_A = X_BA.apply_inverse(pc.p_B);
-    const bool inside =
-        (strictly_inside(scene.B, pA_in_B, 0) && strictly_inside(scene.A, pB_in_A, 0)) ||
-        depth_inside(scene.B, pA_in_B, tol.penetration) ||
-        depth_inside(scene.A, pB_in_A, tol.penetration);
-    if (pc.gap < -tol.penetration && inside) {
+    std::optional<Penetration> pen;
+    if (pc.gap < -tol.penetration) {
+      if (strictly_inside(scene.B, pA_in_B, 0) && strictly_inside(scene.A, pB_in_A, 0))
+        pen = Penetration{pc.a, pc.b, pc.point_B, -pc.gap};
+      else if (const auto dA = depth_inside(scene.B, pA_in_B, tol.penetration))
+        pen = Penetration{pc.a, pc.b, pA_in_B, *dA};
+      else if (const auto dB = depth_inside(scene.A, pB_in_A, tol.penetration))
+        pen = Penetration{pc.a, pc.b, pc.point_B, *dB};
+    }
+    if (pen) {
       penetrates[r] = true;
       bool dup = false;
       for (const Penetration& p : report.penetrations)
-        dup = dup || (p.a == pc.a && p.b == pc.b &&
-                      (p.point_B - pc.point_B).norm() <= tol.distinct_points);
-      if (!dup) report.penetrations.push_back({pc.a, pc.b, pc.point_B, -pc.gap});
+        dup = dup || (p.a == pen->a && p.b == pen->b &&
+                      (p.point_B - pen->point_B).norm() <= tol.distinct_points);
+      if (!dup) report.penetrations.push_back(*pen);
       return Found::Penetration;
     }
     if (out) *out = pc;
