@@ -31,7 +31,7 @@ bool has_contact_line(PtcType t);
 
 // One isolated contact point (or near-contact, when |gap| is above the contact tolerance).
 struct PointContact {
-  ElementId a, b;                // A's element, B's element
+  ElementId a, b;  // A's element, B's element
   PtcType type = PtcType::FF;
   Eigen::Vector3d p_A = Eigen::Vector3d::Zero();      // A's closest point, in A's frame
   Eigen::Vector3d p_B = Eigen::Vector3d::Zero();      // B's closest point, in B's frame
@@ -44,7 +44,7 @@ struct PointContact {
   // the contact line, and the axes of the paper's task frames (Section III-B).
   Eigen::Vector3d tangent_a_B = Eigen::Vector3d::Zero();
   Eigen::Vector3d tangent_b_B = Eigen::Vector3d::Zero();
-  double gap = 0;                // signed distance: > 0 apart, < 0 penetrating
+  double gap = 0;  // signed distance: > 0 apart, < 0 penetrating
   // The contact's conditions at this pose, r(X) (ptc_codimension rows; r = 0 on the contact)
   // and their derivative with respect to a twist of A, J = dr/d(v, w), where A's points move
   // with velocity v + w x p_B (v, w in B's frame, about B's origin). For the codimension-1
@@ -54,7 +54,7 @@ struct PointContact {
   // e-e-touch, r = (separation along normal_B, along line x normal_B, misalignment of the
   // tangents across their relative curvature).
   Eigen::VectorXd residual;
-  Eigen::MatrixXd jacobian;      // rows x 6
+  Eigen::MatrixXd jacobian;  // rows x 6
 };
 
 // Section II-B's contact plane (point and unit normal) and contact line (point, unit
@@ -71,13 +71,13 @@ std::optional<ContactLine> contact_line(const PointContact& c);
 struct Penetration {
   ElementId a, b;
   Eigen::Vector3d point_B = Eigen::Vector3d::Zero();  // deepest point found, B's frame
-  double depth = 0;                                    // > 0
+  double depth = 0;                                   // > 0
 };
 
 struct ContactReport {
-  std::vector<PointContact> contacts;         // |gap| <= tol.contact_gap, canonical order
-  std::vector<PointContact> near;             // local minima with gap in (contact_gap, margin]
-  std::vector<Penetration> penetrations;      // empty unless A and B interpenetrate
+  std::vector<PointContact> contacts;     // |gap| <= tol.contact_gap, canonical order
+  std::vector<PointContact> near;         // local minima with gap in (contact_gap, margin]
+  std::vector<Penetration> penetrations;  // empty unless A and B interpenetrate
   int failed_solves = 0;  // candidate pair solves that did not converge (diagnostics)
   bool penetrating() const { return !penetrations.empty(); }
 };
@@ -109,9 +109,8 @@ ContactReport detect_contacts(const SceneGeometry& scene, const Pose& X_BA,
 // derivatives. `type` must join the kinds of a and b (e-e pairs: EECross or EETouch).
 // Returns nullopt when it does not converge or the solution leaves the elements (then the
 // contact has changed type: the caller asks the detector).
-std::optional<PointContact> solve_pair(const SceneGeometry& scene, const Pose& X_BA,
-                                       ElementId a, ElementId b, PtcType type,
-                                       const Eigen::Vector3d& start_A,
+std::optional<PointContact> solve_pair(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
+                                       ElementId b, PtcType type, const Eigen::Vector3d& start_A,
                                        const Eigen::Vector3d& start_B);
 
 }  // namespace pcsg

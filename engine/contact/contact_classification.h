@@ -39,11 +39,11 @@ double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const Poi
 // e-e pairs are solved as crossing edges first and as touching edges when their tangents are
 // nearly parallel (Tolerances::near_collinear_sine).
 struct ResolvedContact {
-  bool found = false;    // a converged, classified solution
-  bool minimum = false;  // it is a local minimum of the distance (a contact when |gap| small)
-  bool diverged = false; // !found because a solve did not converge (not a rejection)
+  bool found = false;     // a converged, classified solution
+  bool minimum = false;   // it is a local minimum of the distance (a contact when |gap| small)
+  bool diverged = false;  // !found because a solve did not converge (not a rejection)
   PointContact contact;
-  std::string reason;    // !found: why
+  std::string reason;  // !found: why
 };
 ResolvedContact resolve_contact(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
                                 ElementId b, const Eigen::Vector3d& start_A,

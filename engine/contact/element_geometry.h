@@ -89,16 +89,16 @@ Violation worst_violation(const Solid& solid, const SurfaceSet& set, const Eigen
 // worst_violation for deciding whether p leaves the face or edge on the surfaces of `set`: a
 // surface through p (within `on_boundary`) whose normal there lies in the span of the set's
 // normals (sine below `tangential_sine`) touches the element tangentially and does not bound
-// it, so it is passed over (for a vertex's set, worst_violation itself). (B-reps have no edge where surfaces meet tangentially, see
-// brep_builder: Example 1's sphere x^2 + y^2 + z^2 = 16 touches the paraboloid f3 at its
-// vertex (0, 0, -4), an interior point of f3 far from edge e2, scenes/stress/
+// it, so it is passed over (for a vertex's set, worst_violation itself). (B-reps have no edge where
+// surfaces meet tangentially, see brep_builder: Example 1's sphere x^2 + y^2 + z^2 = 16 touches the
+// paraboloid f3 at its vertex (0, 0, -4), an interior point of f3 far from edge e2, scenes/stress/
 // pole_on_bottom_tip.yaml.)
 Violation bounding_violation(const Solid& solid, const SurfaceSet& set, const Eigen::Vector3d& p,
                              double on_boundary, double tangential_sine);
 
 // The element of `solid` on exactly the surfaces of `set` nearest to p, preferring elements
 // adjacent to `near` (the element the point came from); index -1 when there is none.
-ElementId element_on_surfaces(const Solid& solid, const SurfaceSet& set,
-                              const Eigen::Vector3d& p, ElementId near);
+ElementId element_on_surfaces(const Solid& solid, const SurfaceSet& set, const Eigen::Vector3d& p,
+                              ElementId near);
 
 }  // namespace pcsg

@@ -93,7 +93,7 @@ class PairSystem final : public SquareSystem {
   PairSetup s_;
   PtcType type_;
   int size_ = 0;
-  SurfaceSet sa_, sb_;                                 // the elements' surfaces
+  SurfaceSet sa_, sb_;                                  // the elements' surfaces
   Eigen::Vector3d vertex_A_ = Eigen::Vector3d::Zero();  // A's vertex (A's frame)
   Eigen::Vector3d vertex_B_ = Eigen::Vector3d::Zero();  // B's vertex (B's frame)
 };

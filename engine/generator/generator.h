@@ -34,9 +34,7 @@ struct GeneratorOptions {
 class GeneratorListener {
  public:
   virtual ~GeneratorListener() = default;
-  virtual void on_state(const StateGraph& graph, const State& state) {
-    (void)graph, (void)state;
-  }
+  virtual void on_state(const StateGraph& graph, const State& state) { (void)graph, (void)state; }
   virtual void on_candidate(const StateGraph& graph, const Candidate& candidate) {
     (void)graph, (void)candidate;
   }
