@@ -225,6 +225,19 @@ constexpr double kMarginRoundOff = 1e-6;
 // larger set costs more than the few full queries of a bisection it would replace.
 constexpr size_t kMaxNearbyLeaves = 20000;
 
+// The node pair's children onto a depth-first stack: the larger box is split (as FCL does),
+// a leaf never; at least one of the two is an inner node.
+void push_children(std::vector<std::pair<int, int>>& stack, int a, int b,
+                   const fcl::BVNode<fcl::OBBRSSd>& na, const fcl::BVNode<fcl::OBBRSSd>& nb) {
+  if (nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size())) {
+    stack.emplace_back(na.rightChild(), b);
+    stack.emplace_back(na.leftChild(), b);
+  } else {
+    stack.emplace_back(a, nb.rightChild());
+    stack.emplace_back(a, nb.leftChild());
+  }
+}
+
 }  // namespace
 
 struct ContactContext::Models {
@@ -337,13 +350,7 @@ bool ContactContext::overlapping_triangles(const Pose& X_BA,
     }
     // FCL's overlap(R, T, OBB, OBB) on its face axes, with B's box placed once per query.
     if (disjoint_on_face_axes(Rab, Tab, oa.extent, nb.bv.obb.extent)) continue;
-    if (lb || (!la && na.bv.size() > nb.bv.size())) {
-      stack.emplace_back(na.rightChild(), b);
-      stack.emplace_back(na.leftChild(), b);
-    } else {
-      stack.emplace_back(a, nb.rightChild());
-      stack.emplace_back(a, nb.leftChild());
-    }
+    push_children(stack, a, b, na, nb);
   }
   return true;
 }
@@ -406,12 +413,8 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
         return out;
       }
       out.leaves.emplace_back(a, b);
-    } else if (nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size())) {
-      stack.emplace_back(na.rightChild(), b);
-      stack.emplace_back(na.leftChild(), b);
     } else {
-      stack.emplace_back(a, nb.rightChild());
-      stack.emplace_back(a, nb.leftChild());
+      push_children(stack, a, b, na, nb);
     }
   }
   return out;
