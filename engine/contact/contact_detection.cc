@@ -7,6 +7,7 @@
 
 #include "engine/contact/contact_classification.h"
 #include "engine/contact/contact_context.h"
+#include "engine/geometry/surface.h"
 
 namespace pcsg {
 namespace {
@@ -106,6 +107,48 @@ Eigen::Vector3d start_on(const Solid& solid, ElementId id, const Eigen::Vector3d
     return best;
   }
   return centroid;
+}
+
+// resolve_contact from mesh-derived starts; when a face is involved and that finds no distance
+// minimum, again from the point of the face whose normal is opposite the other element's (the
+// middle of its normal cone) at its start. A strongly curved face holds its contact where its
+// normal turns opposite the other's: the needle's tips (scenes/stress/needle_in_dish.yaml,
+// radius of curvature 2e-5 L) touch the dish ~1e-5 L from their apex, and from a mesh start a
+// cell away the pair's Newton converged to a saddle pairing the tip with the dish 0.17 L away
+// (or diverged), so detection saw nothing at touching poses, only the penetration past its
+// tolerance. Costs nothing where the first solve finds a minimum.
+ResolvedContact resolve_from_mesh_start(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
+                                        ElementId b, const Eigen::Vector3d& start_A,
+                                        const Eigen::Vector3d& start_B) {
+  ResolvedContact res = resolve_contact(scene, X_BA, a, b, start_A, start_B);
+  if ((res.found && res.minimum) || (a.kind != ElementKind::Face && b.kind != ElementKind::Face))
+    return res;
+  // the middle of an element's normal cone at p: its surfaces' unit normals summed
+  auto middle_normal = [](const Solid& S, ElementId el, const Eigen::Vector3d& p) {
+    const SurfaceSet set = element_surfaces(S, el);
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int k = 0; k < set.size; ++k) n += unit_normal(S.surfaces[set.index[k]], p);
+    return n.normalized();
+  };
+  if (a.kind == ElementKind::Face) {
+    const Polynomial& gA = scene.A.surfaces[scene.A.faces[a.index].surface];
+    const Eigen::Vector3d u = -(X_BA.quaternion.conjugate() * middle_normal(scene.B, b, start_B));
+    if (const auto pA =
+            u.allFinite() ? point_with_normal(gA, u, start_A, scene.tol) : std::nullopt) {
+      ResolvedContact again = resolve_contact(scene, X_BA, a, b, *pA, start_B);
+      if (again.found && again.minimum) return again;
+    }
+  }
+  if (b.kind == ElementKind::Face) {
+    const Polynomial& gB = scene.B.surfaces[scene.B.faces[b.index].surface];
+    const Eigen::Vector3d u = -(X_BA.quaternion * middle_normal(scene.A, a, start_A));
+    if (const auto pB =
+            u.allFinite() ? point_with_normal(gB, u, start_B, scene.tol) : std::nullopt) {
+      ResolvedContact again = resolve_contact(scene, X_BA, a, b, start_A, *pB);
+      if (again.found && again.minimum) return again;
+    }
+  }
+  return res;
 }
 
 struct Candidate {
@@ -347,7 +390,7 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
   auto solve_from = [&](size_t r, const Candidate& c, int start,
                         PointContact* out) -> Found {
     const auto [tA, tB] = pairs[start];
-    const ResolvedContact res = resolve_contact(
+    const ResolvedContact res = resolve_from_mesh_start(
         scene, X_BA, c.a, c.b, start_on(scene.A, c.a, ctx.index_A().centroids[tA]),
         start_on(scene.B, c.b, ctx.index_B().centroids[tB]));
     if (!res.found) {

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "engine/geometry/edge_tracer.h"
+#include "engine/geometry/mesh_extremes.h"
 #include "engine/geometry/surface.h"
 #include "engine/geometry/surface_patch.h"
 
@@ -355,7 +356,9 @@ SolidMesh mesh_solid(const Solid& solid, double chordal_error, const Tolerances&
   m.snap_vertices();
   m.find_boundary();
   m.merge_edge_points();
-  return m.assemble(chordal_error);
+  SolidMesh mesh = m.assemble(chordal_error);
+  cover_extremes(solid, mesh, tol);
+  return mesh;
 }
 
 }  // namespace pcsg

@@ -214,4 +214,37 @@ Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2,
   return r;
 }
 
+std::optional<Eigen::Vector3d> point_with_normal(const Polynomial& g, const Eigen::Vector3d& u,
+                                                 const Eigen::Vector3d& start,
+                                                 const Tolerances& tol) {
+  // Quadratic from a start within a few mesh cells; 30 iterations leave room for the first,
+  // farther steps.
+  constexpr int kIterations = 30;
+  const Eigen::Vector3d e1 = u.unitOrthogonal(), e2 = u.cross(e1);
+  Eigen::Vector3d p = start;
+  for (int it = 0; it < kIterations; ++it) {
+    double val = 0;
+    Eigen::Vector3d grad;
+    Eigen::Matrix3d H;
+    g.evaluate(p, &val, &grad, &H);
+    const double gn = grad.norm();
+    if (!(gn > 0)) return std::nullopt;
+    const double gl = gn / tol.length_scale;
+    const Eigen::Vector3d F(val / gn, grad.dot(e1) / gl, grad.dot(e2) / gl);
+    if (std::max(std::abs(F[0]), std::hypot(F[1], F[2])) <= tol.solve_residual) {
+      if (grad.dot(u) > 0) return p;
+      return std::nullopt;
+    }
+    Eigen::Matrix3d J;
+    J.row(0) = grad.transpose() / gn;
+    J.row(1) = (H * e1).transpose() / gl;
+    J.row(2) = (H * e2).transpose() / gl;
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
+    if (!lu.isInvertible()) return std::nullopt;
+    p -= lu.solve(F);
+    if (!p.allFinite()) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 }  // namespace pcsg

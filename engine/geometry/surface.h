@@ -54,6 +54,15 @@ Eigen::Vector3d curve_tangent(const Polynomial& g1, const Polynomial& g2,
 // |n1 x n2| at p: the sine of the angle at which the two surfaces cross.
 double normals_sine(const Polynomial& g1, const Polynomial& g2, const Eigen::Vector3d& p);
 
+// The point of g = 0 near `start` whose outward unit normal is u (unit): grad g parallel to u
+// and of its sense, by Newton on g = 0 and grad g . e1 = grad g . e2 = 0 (e1, e2 orthogonal
+// to u), rows scaled to lengths. It is the extreme point of a convex patch along u (a tip's
+// apex) and, with u opposite a face's normal, where a strongly curved face meets that face.
+// nullopt when Newton does not converge or converges to the opposite normal.
+std::optional<Eigen::Vector3d> point_with_normal(const Polynomial& g, const Eigen::Vector3d& u,
+                                                 const Eigen::Vector3d& start,
+                                                 const Tolerances& tol);
+
 // Result of a Newton projection.
 struct Projection {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();

@@ -134,5 +134,37 @@ TEST(ExampleScenes, NeedlePokedThroughTheDishIsAPenetration) {
   EXPECT_TRUE(rep.penetrating()) << ContactFormation::of(rep.contacts).str(g);
 }
 
+// The needle lying in the dish on its two tips (radius of curvature 2.5e-4, 2e-5 L): the
+// generator's {(fA-f1, 2)} witness. Each tip touches where its normal turns opposite the dish's,
+// ~1e-4 from its apex; from the mesh's start a cell away the pair's Newton converged to a
+// saddle pairing the tip with the dish 2.18 away, so detection saw nothing at touching poses and
+// only the penetration past its tolerance (the seed search's bisections ended without a touch).
+TEST(ExampleScenes, NeedleTipsTouchingTheDishAreContacts) {
+  const SceneGeometry g = build_scene_geometry(
+      load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/stress/needle_in_dish.yaml"));
+  Pose X;
+  X.position = {0.016142898348310904, 0.016136753761213807, 0.9170059129054894};
+  X.quaternion = Eigen::Quaterniond(0.49542966905451413, 2.669870119583177e-05, -0.7134883255488726,
+                                    0.49546326969128607)
+                     .normalized();
+  const ContactReport rep = detect_contacts(g, X);
+  EXPECT_FALSE(rep.penetrating());
+  EXPECT_EQ(ContactFormation::of(rep.contacts).str(g), "{(fA-f1, 2)}");
+  for (const PointContact& c : rep.contacts) {
+    EXPECT_LE(std::abs(c.gap), g.tol.contact_gap);
+    // at the tips: 2.5 from the needle's centre along its axis, to its radius of curvature
+    EXPECT_NEAR(std::abs(c.p_A.z()), 2.5, 1e-3);
+  }
+  // a hundredth of a motion step lower the tips are inside the dish, as much higher apart
+  const double d = 1e-2 * g.tol.motion_step;
+  Pose lower = X, higher = X;
+  lower.position.z() -= d;
+  higher.position.z() += d;
+  EXPECT_TRUE(detect_contacts(g, lower).penetrating());
+  const ContactReport up = detect_contacts(g, higher);
+  EXPECT_FALSE(up.penetrating());
+  EXPECT_TRUE(up.contacts.empty()) << ContactFormation::of(up.contacts).str(g);
+}
+
 }  // namespace
 }  // namespace pcsg
