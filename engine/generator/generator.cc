@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -148,13 +150,23 @@ class Builder {
   StateGraph graph_;
   MotionCounters counters_;
   std::map<std::pair<int, int>, bool> linked_;
-  // Per state: the witnesses shown to lie in its region (its own first, then those of later
-  // motions that ended there), a roadmap that later witnesses may join at any of its points;
-  // its region signature; its class in the union of states proved to be one.
   struct Witness {
     Pose pose;
     std::vector<PointContact> contacts;
   };
+  // The hypotheses of a state toward a CF the graph has but the state has no link to, tried
+  // again from waypoint witnesses on the way to each state of that CF (feasibility from one
+  // witness is incomplete: from a witness deep in the region every motion may run into an
+  // obstacle that a witness nearer the target avoids).
+  void retry_missing_links();
+  // A witness of state `id` the fraction `f` of the way toward state `toward`'s witness: the
+  // pose there (the target turned by the solids' symmetries to the nearest equivalent)
+  // projected onto the state's CF, and joined to the state's witness by CF-compliant motions.
+  std::optional<Witness> waypoint(int id, int toward, double f);
+
+  // Per state: the witnesses shown to lie in its region (its own first, then those of later
+  // motions that ended there), a roadmap that later witnesses may join at any of its points;
+  // its region signature; its class in the union of states proved to be one.
   std::vector<std::vector<Witness>> members_;
   std::vector<RegionSignature> signatures_;
   // (state, witness, CF) already retried by retry_from_other_witnesses.
@@ -466,6 +478,81 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
   return out;
 }
 
+std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) {
+  const State& s = graph_.states[id];
+  const Pose& to = graph_.states[toward].pose;
+  // The target as near the state's witness as the solids' symmetries allow: their half turns
+  // and turns about an axis of revolution relabel points without moving anything.
+  std::vector<Pose> targets = {to};
+  for (const SymmetryAxis& h : symmetry_.half_turns_A)
+    targets.push_back(turned_about_A(to, h, M_PI));
+  for (const SymmetryAxis& h : symmetry_.half_turns_B)
+    targets.push_back(turned_about_B(to, h, M_PI));
+  Pose target = to;
+  double best = std::numeric_limits<double>::infinity();
+  for (const Pose& t : targets) {
+    const Pose a = aligned_by_symmetry(scene_, t, s.pose, symmetry_);
+    const double angle = a.quaternion.angularDistance(s.pose.quaternion);
+    if (angle < best) best = angle, target = a;
+  }
+  Pose mid;
+  mid.position = (1 - f) * s.pose.position + f * target.position;
+  mid.quaternion = s.pose.quaternion.slerp(f, target.quaternion).normalized();
+  ++counters_.detections;
+  const ProjectionResult proj = project_onto_cf(scene_, mid, s.cf);
+  if (!proj.ok) return std::nullopt;
+  ++counters_.detections;
+  const ContactReport rep = detect_contacts(scene_, proj.pose);
+  if (rep.penetrating() || !(ContactFormation::of(rep.contacts) == s.cf) ||
+      region_signature(rep.contacts) != signatures_[id])
+    return std::nullopt;
+  // a witness of this very state only when a CF-compliant motion joins them
+  if (!joined_within_cf(scene_, s.pose, proj.pose, s.cf, counters_, symmetry_)) return std::nullopt;
+  return Witness{proj.pose, rep.contacts};
+}
+
+void Builder::retry_missing_links() {
+  const int n = static_cast<int>(graph_.states.size());
+  for (int id = 0; id < n && !cancelled(); ++id) {
+    for (const Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts)) {
+      std::vector<int> targets;
+      for (const State& t : graph_.states)
+        if (t.cf == h.cf) targets.push_back(t.id);
+      const bool linked = std::any_of(graph_.links.begin(), graph_.links.end(), [&](const Link& l) {
+        return representative(l.from) == representative(id) && graph_.states[l.to].cf == h.cf;
+      });
+      if (targets.empty() || linked) continue;
+      // Halfway, then three quarters of the way, toward each state of the CF.
+      bool found = false;
+      for (int t : targets) {
+        for (double f : {0.5, 0.75}) {
+          const std::optional<Witness> w = waypoint(id, t, f);
+          if (!w) continue;
+          State from = graph_.states[id];
+          from.pose = w->pose;
+          from.contacts = w->contacts;
+          // the plans index the waypoint's own contacts
+          for (const Hypothesis& hw : hypothesise_ln(scene_, from.contacts)) {
+            if (!(hw.cf == h.cf)) continue;
+            TryResult r = try_hypothesis(scene_, from, hw, options_.measure_discretisation);
+            counters_.merge(r.counters);
+            if (!r.candidate.feasible) break;
+            const int to = find_state(h.cf, r.outcome.end, r.outcome.contacts);
+            if (to < 0) break;
+            r.candidate.to = to;
+            graph_.candidates.push_back(r.candidate);
+            add_link(id, to, r.candidate.motion);
+            found = true;
+            break;
+          }
+          if (found) break;
+        }
+        if (found) break;
+      }
+    }
+  }
+}
+
 StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<SeedCandidate> seeds;
@@ -517,6 +604,7 @@ StateGraph Builder::run() {
     if (cancelled() || (graph_.states.size() == states && discoveries_.size() == found)) break;
   }
 
+  if (!cancelled()) retry_missing_links();
   merge_united_states();
 
   graph_.stats.seconds =

@@ -33,7 +33,8 @@ bool moved_either_way(const SceneGeometry& scene, const Pose& a, const Pose& b,
          connected_within_cf(scene, b, a, cf, counters);
 }
 
-// a turned about B's axis and then about A's own (each when the solid has one) toward b.
+}  // namespace
+
 Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& b,
                          const SceneSymmetry& sym) {
   Pose x = a;
@@ -57,8 +58,6 @@ Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& 
   }
   return x;
 }
-
-}  // namespace
 
 SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
   SceneSymmetry s{axis_of_revolution(scene.B, scene.tol), axis_of_revolution(scene.A, scene.tol),

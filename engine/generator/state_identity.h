@@ -34,6 +34,12 @@ struct SceneSymmetry {
   static SceneSymmetry of(const SceneGeometry& scene);
 };
 
+// `a` turned about B's axis until A's centre is over b's, then about A's own axis until the
+// orientations agree best (each turn only when that solid is one of revolution): the same
+// contacts as `a`, placed as near `b` as the symmetries allow.
+Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& b,
+                         const SceneSymmetry& sym);
+
 // Whether the witnesses `a` and `b` of `cf` are shown to lie in one CF-connected region:
 //  1. a CF-compliant motion (connected_within_cf) from a to b or from b to a;
 //  2. when B (A) is a solid of revolution: a turned about B's axis until A's centre is over
