@@ -144,6 +144,7 @@ StateGraph read_graph_json(const std::string& path, const SceneGeometry& scene) 
     cand.reason = c.value("reason", std::string());
     cand.steps = c.value("steps", 0);
     cand.attempts = c.value("attempts", 0);
+    cand.crossing = c.value("crossing", std::string());
     g.candidates.push_back(std::move(cand));
   }
   if (root.contains("stats") && root["stats"].is_object())

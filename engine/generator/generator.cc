@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -11,9 +12,14 @@
 #include <tuple>
 
 #include "engine/generator/hypothesis.h"
+#include "engine/generator/motion_drive.h"
 #include "engine/generator/state_identity.h"
 
 namespace pcsg {
+
+namespace {
+using RegionSignatures = std::vector<RegionSignature>;
+}  // namespace
 
 std::vector<MotionVariant> motion_variants() {
   return {
@@ -41,9 +47,16 @@ bool adds_one_contact(const ContactFormation& lower, const ContactFormation& upp
   return true;
 }
 
-struct TryResult {
+// One hypothesised target: a CF and, when it has e-e-cross contacts, the crossing signs to
+// arrive with (one candidate each).
+struct Reached {
   Candidate candidate;
   MotionOutcome outcome;
+};
+
+struct TryResult {
+  RegionSignatures wanted;       // the signatures tried (see try_hypothesis)
+  std::vector<Reached> targets;  // one per signature of `wanted`, in its order
   MotionCounters counters;
   std::vector<Discovery> discovered;  // higher-cardinality states met by failed motions
 };
@@ -66,33 +79,222 @@ bool variant_matters(const MotionVariant& v, const std::vector<ContactPlan>& pla
 // that choice; trying two of them covers asymmetric situations without trying all.
 constexpr size_t kMaxPlansPerHypothesis = 2;
 
-TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h,
-                         bool measure) {
-  TryResult r;
-  r.counters.measure = measure;
-  r.candidate.from = s.id;
-  r.candidate.cf = h.cf;
-  std::string reasons;
+// The region signatures a plan may arrive with: a kept e-e-cross contact keeps its crossing
+// sign (no CF-compliant motion changes it, state_identity.h); a contact changed into an
+// e-e-cross may arrive with either, and each is a region of its own.
+RegionSignatures plan_signatures(const std::vector<PointContact>& contacts,
+                                 const std::vector<ContactPlan>& plan) {
+  RegionSignature fixed;
+  std::vector<std::tuple<int, int, int, int>> open;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const ContactPlan& p = plan[i];
+    if (p.action == ContactAction::Keep) {
+      const RegionSignature own = region_signature({contacts[i]});
+      fixed.insert(fixed.end(), own.begin(), own.end());
+    } else if (p.action == ContactAction::Change && p.new_type == PtcType::EECross) {
+      open.emplace_back(static_cast<int>(p.new_a.kind), p.new_a.index,
+                        static_cast<int>(p.new_b.kind), p.new_b.index);
+    }
+  }
+  RegionSignatures out;
+  for (size_t bits = 0; bits < (size_t{1} << open.size()); ++bits) {
+    RegionSignature sig = fixed;
+    for (size_t k = 0; k < open.size(); ++k) {
+      const auto& [ak, ai, bk, bi] = open[k];
+      sig.emplace_back(ak, ai, bk, bi, (bits >> k & 1) ? 1 : -1);
+    }
+    std::sort(sig.begin(), sig.end());
+    out.push_back(std::move(sig));
+  }
+  return out;
+}
+
+// The signatures of every plan tried for `h` from `contacts`, sorted and without repeats.
+RegionSignatures target_signatures(const std::vector<PointContact>& contacts, const Hypothesis& h) {
+  RegionSignatures out;
   const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
   for (size_t p = 0; p < plans; ++p)
-    for (const MotionVariant& v : motion_variants()) {
-      if (!variant_matters(v, h.plan_options[p])) continue;
-      ++r.candidate.attempts;
-      MotionOutcome o = run_transition_motion(scene, s.pose, s.contacts, h.plan_options[p], h.cf,
-                                              v, r.counters);
-      r.candidate.motion = o.motion;
-      r.candidate.steps = o.steps;
-      if (o.discovered) r.discovered.push_back(*o.discovered);
-      if (o.feasible) {
-        r.candidate.feasible = true;
-        r.outcome = std::move(o);
-        return r;
+    for (RegionSignature& sig : plan_signatures(contacts, h.plan_options[p]))
+      out.push_back(std::move(sig));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::string signature_text(const SceneGeometry& scene, const RegionSignature& sig) {
+  std::string out;
+  for (const auto& [ak, ai, bk, bi, sign] : sig) {
+    if (!out.empty()) out += ", ";
+    out += element_pair_name(scene, {static_cast<ElementKind>(ak), ai},
+                             {static_cast<ElementKind>(bk), bi});
+    out += sign > 0 ? " +" : " -";
+  }
+  return out;
+}
+
+// Where a transition's motions start: the state's witness, or that witness with A turned
+// about the contact normal of a contact that becomes an e-e-cross. The turn keeps the contact
+// point and the normal and turns A's tangents there: the slide toward the new edge then
+// arrives with the edges crossing the other way (state_identity.h: a half turn reverses t_A,
+// so the crossing sign).
+struct MotionStart {
+  bool ok = false;
+  Pose pose;
+  std::vector<PointContact> contacts;  // in the order of the state's contacts
+  std::string prefix;                  // prepended to the motion's name
+};
+
+// The starts of a hypothesis's motions: the witness itself, then, for each contact that may
+// become an e-e-cross by sliding onto a new edge, the witness turned about its normal so that
+// the slide runs along the other edge's tangent, one way and the other: the slide then meets
+// the new edge across the other (far from e-e-touch, where either sign is near), each way
+// with one crossing sign. (Where the slide has no direction, e.g. leaving a vertex, a half
+// turn.) Turned starts are computed on first use.
+class MotionStarts {
+ public:
+  MotionStarts(const SceneGeometry& scene, const State& s, const Hypothesis& h)
+      : scene_(scene), s_(s) {
+    turns_.push_back({-1, 0, ""});
+    const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+    for (size_t i = 0; i < s.contacts.size(); ++i)
+      for (size_t p = 0; p < plans; ++p) {
+        const ContactPlan& cp = h.plan_options[p][i];
+        if (cp.action != ContactAction::Change || cp.new_type != PtcType::EECross) continue;
+        add_turns(static_cast<int>(i), cp);
+        break;
       }
-      if (!reasons.empty()) reasons += "; ";
-      reasons += o.motion + ": " + o.reason;
-      r.outcome = std::move(o);
+    starts_.resize(turns_.size());
+  }
+  size_t size() const { return turns_.size(); }
+  const MotionStart& at(size_t k, MotionCounters& counters) {
+    if (!starts_[k]) {
+      const Turn& t = turns_[k];
+      if (t.pivot < 0) {
+        starts_[k] = MotionStart{true, s_.pose, s_.contacts, ""};
+      } else {
+        const TurnedWitness w =
+            turned_about_normal(scene_, s_.pose, s_.contacts, t.pivot, t.angle, counters);
+        starts_[k] = MotionStart{w.ok, w.pose, w.contacts, t.name + "+"};
+      }
     }
-  r.candidate.reason = reasons;
+    return *starts_[k];
+  }
+
+ private:
+  struct Turn {
+    int pivot;
+    double angle;
+    std::string name;
+  };
+  void add_turns(int pivot, const ContactPlan& cp) {
+    const PointContact& c = s_.contacts[pivot];
+    const Eigen::Vector3d& n = c.normal_B;
+    if (n.norm() == 0) return;
+    const bool on_a = cp.changes_a;
+    const ElementId current = on_a ? c.a : c.b;
+    const ElementId goal = on_a ? cp.new_a : cp.new_b;
+    const Eigen::Vector3d other_tangent = on_a ? c.tangent_b_B : c.tangent_a_B;
+    std::optional<Eigen::Vector3d> d;
+    if (element_dimension(goal) < element_dimension(current) && other_tangent.norm() > 0)
+      d = on_a ? direction_toward(scene_.A, goal, c.p_A, normal_in_A(s_.pose, c))
+               : direction_toward(scene_.B, goal, c.p_B, n);
+    if (!d) {
+      turns_.push_back({pivot, M_PI, "halfturn"});
+      return;
+    }
+    // In B's frame; the angle about n from the slide to the other edge's tangent.
+    const Eigen::Vector3d slide = on_a ? Eigen::Vector3d(s_.pose.rotate(*d)) : *d;
+    const double phi = std::atan2(n.dot(slide.cross(other_tangent)), slide.dot(other_tangent));
+    // Turning A by theta turns A's slide by theta (change on A), or A's tangent (change on B).
+    const std::string other = on_a ? scene_.B.element_name(c.b) : scene_.A.element_name(c.a);
+    for (int way : {1, -1}) {
+      double theta = on_a ? phi : -phi;
+      if (way < 0) theta += M_PI;
+      theta = std::remainder(theta, 2 * M_PI);
+      turns_.push_back({pivot, theta, std::string("spin(") + (way > 0 ? "+" : "-") + other + ")"});
+    }
+  }
+
+  const SceneGeometry& scene_;
+  const State& s_;
+  std::vector<Turn> turns_;
+  std::vector<std::optional<MotionStart>> starts_;
+};
+
+// Tries the motions toward `h` for each wanted region signature (all of the hypothesis's when
+// `wanted` is null): from each start (MotionStarts), each plan that may arrive with the
+// signature, each variant, until one arrives with exactly that signature. A motion is run at
+// most once and its outcome shared by the signatures; within one start, once a motion has
+// arrived with another signature, that start's remaining variants are left for the next start
+// (they slide the same way and would arrive alike).
+TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h,
+                         bool measure, const RegionSignatures* wanted = nullptr) {
+  TryResult r;
+  r.counters.measure = measure;
+  r.wanted = wanted ? *wanted : target_signatures(s.contacts, h);
+  const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+  std::vector<RegionSignatures> plan_sigs;
+  for (size_t p = 0; p < plans; ++p)
+    plan_sigs.push_back(plan_signatures(s.contacts, h.plan_options[p]));
+  const std::vector<MotionVariant> variants = motion_variants();
+  MotionStarts starts(scene, s, h);
+  std::map<std::tuple<size_t, size_t, size_t>, MotionOutcome> runs;
+  const bool signed_target = r.wanted.size() > 1 || !r.wanted.front().empty();
+  for (const RegionSignature& sig : r.wanted) {
+    Reached out;
+    Candidate& c = out.candidate;
+    c.from = s.id;
+    c.cf = h.cf;
+    if (signed_target) c.crossing = signature_text(scene, sig);
+    std::string reasons;
+    auto note = [&](const std::string& why) {
+      if (!reasons.empty()) reasons += "; ";
+      reasons += why;
+    };
+    bool done = false;
+    for (size_t k = 0; k < starts.size() && !done; ++k) {
+      const MotionStart& start = starts.at(k, r.counters);
+      if (!start.ok) {
+        note("turn about the normal: not CF-compliant from this witness");
+        continue;
+      }
+      bool other_side = false;
+      for (size_t p = 0; p < plans && !done && !other_side; ++p) {
+        if (std::find(plan_sigs[p].begin(), plan_sigs[p].end(), sig) == plan_sigs[p].end())
+          continue;
+        for (size_t v = 0; v < variants.size() && !done && !other_side; ++v) {
+          if (!variant_matters(variants[v], h.plan_options[p])) continue;
+          ++c.attempts;
+          auto it = runs.find({k, p, v});
+          if (it == runs.end()) {
+            MotionOutcome o =
+                run_transition_motion(scene, start.pose, start.contacts, h.plan_options[p], h.cf,
+                                      variants[v], r.counters);
+            o.motion = start.prefix + o.motion;
+            if (o.discovered) r.discovered.push_back(*o.discovered);
+            it = runs.emplace(std::make_tuple(k, p, v), std::move(o)).first;
+          }
+          const MotionOutcome& o = it->second;
+          c.motion = o.motion;
+          c.steps = o.steps;
+          if (o.feasible && region_signature(o.contacts) == sig) {
+            c.feasible = true;
+            out.outcome = o;
+            done = true;
+          } else if (o.feasible) {
+            note(o.motion + ": arrives with the crossing " +
+                 signature_text(scene, region_signature(o.contacts)));
+            other_side = true;
+          } else {
+            note(o.motion + ": " + o.reason);
+            out.outcome = o;
+          }
+        }
+      }
+    }
+    if (!c.feasible) c.reason = reasons;
+    r.targets.push_back(std::move(out));
+  }
   return r;
 }
 
@@ -137,6 +339,10 @@ class Builder {
   // The motions retry_from_other_witnesses would try as the graph stands, run on the worker
   // threads; keyed by (state, witness, CF). Empty with one thread.
   std::map<std::tuple<int, int, ContactFormation>, TryResult> try_retries_ahead();
+  // The region signatures of `h`'s target (from a witness with `contacts`) that no state of
+  // the graph has: what a retry still looks for.
+  RegionSignatures missing_signatures(const std::vector<PointContact>& contacts,
+                                      const Hypothesis& h) const;
   void add_link(int from, int to, const std::string& motion);
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
@@ -322,26 +528,28 @@ void Builder::grow(int seed_id) {
     for (size_t j = 0; j < jobs.size(); ++j) {
       TryResult& r = results[j];
       counters_.merge(r.counters);
-      Candidate& c = r.candidate;
-      if (c.feasible) {
-        int to = find_state(c.cf, r.outcome.end, r.outcome.contacts);
-        if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
-          to = add_state(c.cf, r.outcome.end, r.outcome.contacts, false,
-                         graph_.states[c.from].depth + 1);
-          next_frontier.push_back(to);
+      const int from = jobs[j].first;
+      for (Reached& t : r.targets) {
+        Candidate& c = t.candidate;
+        if (c.feasible) {
+          int to = find_state(c.cf, t.outcome.end, t.outcome.contacts);
+          if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
+            to = add_state(c.cf, t.outcome.end, t.outcome.contacts, false,
+                           graph_.states[c.from].depth + 1);
+            next_frontier.push_back(to);
+          }
+          c.to = to;
+          if (to >= 0) add_link(c.from, to, c.motion);
         }
-        c.to = to;
-        if (to >= 0) add_link(c.from, to, c.motion);
+        graph_.candidates.push_back(c);
+        if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
       }
       for (Discovery& d : r.discovered)
-        if (adds_one_contact(graph_.states[c.from].cf, d.cf))
-          discoveries_.push_back({c.from, std::move(d)});
-      graph_.candidates.push_back(c);
-      if (listener_) {
-        listener_->on_candidate(graph_, graph_.candidates.back());
+        if (adds_one_contact(graph_.states[from].cf, d.cf))
+          discoveries_.push_back({from, std::move(d)});
+      if (listener_)
         listener_->on_progress(graph_, level, static_cast<int>(j + 1),
                                static_cast<int>(jobs.size()));
-      }
     }
     for (size_t k = 0; k < probes.size(); ++k) {
       counters_.merge(probe_counters[k]);
@@ -410,25 +618,31 @@ void Builder::retry_from_other_witnesses() {
         for (const Hypothesis& h : hypothesise_ln(scene_, from.contacts)) {
           if (!retried_.insert({static_cast<int>(id), static_cast<int>(k), h.cf}).second)
             continue;
-          if (std::any_of(graph_.states.begin(), graph_.states.end(),
-                          [&](const State& s) { return s.cf == h.cf; }))
-            continue;
+          const RegionSignatures wanted = missing_signatures(from.contacts, h);
+          if (wanted.empty()) continue;
           if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
+          // A motion run ahead for other wanted signatures is not the one the walk would run.
           const auto found = ahead.find({static_cast<int>(id), static_cast<int>(k), h.cf});
-          TryResult r = found != ahead.end()
-                            ? std::move(found->second)
-                            : try_hypothesis(scene_, from, h, options_.measure_discretisation);
+          TryResult r =
+              found != ahead.end() && found->second.wanted == wanted
+                  ? std::move(found->second)
+                  : try_hypothesis(scene_, from, h, options_.measure_discretisation, &wanted);
           counters_.merge(r.counters);
           for (Discovery& d : r.discovered)
             if (adds_one_contact(from.cf, d.cf)) discoveries_.push_back({from.id, std::move(d)});
-          if (!r.candidate.feasible) continue;
-          const int to = add_state(h.cf, r.outcome.end, r.outcome.contacts, false,
-                                   from.depth + 1);
-          r.candidate.to = to;
-          graph_.candidates.push_back(r.candidate);
-          add_link(from.id, to, r.candidate.motion);
-          grow(to);
-          found_new = true;
+          // Each signature reached is a region the graph does not have (`wanted`).
+          std::vector<int> reached;
+          for (Reached& t : r.targets) {
+            if (!t.candidate.feasible) continue;
+            const int to =
+                add_state(h.cf, t.outcome.end, t.outcome.contacts, false, from.depth + 1);
+            t.candidate.to = to;
+            graph_.candidates.push_back(t.candidate);
+            add_link(from.id, to, t.candidate.motion);
+            reached.push_back(to);
+          }
+          for (int to : reached) grow(to);
+          found_new = found_new || !reached.empty();
         }
       }
     }
@@ -439,6 +653,7 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
   struct Job {
     int id, k;
     Hypothesis h;
+    RegionSignatures wanted;
   };
   std::vector<Job> jobs;
   std::set<std::tuple<int, int, ContactFormation>> listed;
@@ -448,10 +663,10 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
         const std::tuple<int, int, ContactFormation> key{static_cast<int>(id),
                                                          static_cast<int>(k), h.cf};
         if (retried_.count(key) || !listed.insert(key).second) continue;
-        if (std::any_of(graph_.states.begin(), graph_.states.end(),
-                        [&](const State& s) { return s.cf == h.cf; }))
-          continue;
-        jobs.push_back({static_cast<int>(id), static_cast<int>(k), std::move(h)});
+        RegionSignatures wanted = missing_signatures(members_[id][k].contacts, h);
+        if (wanted.empty()) continue;
+        jobs.push_back(
+            {static_cast<int>(id), static_cast<int>(k), std::move(h), std::move(wanted)});
       }
   std::vector<TryResult> results(jobs.size());
   std::atomic<size_t> next{0};
@@ -461,7 +676,8 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
       State from = graph_.states[jobs[j].id];
       from.pose = members_[jobs[j].id][jobs[j].k].pose;
       from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
-      results[j] = try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation);
+      results[j] =
+          try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation, &jobs[j].wanted);
     }
   };
   const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
@@ -536,13 +752,15 @@ void Builder::retry_missing_links() {
             if (!(hw.cf == h.cf)) continue;
             TryResult r = try_hypothesis(scene_, from, hw, options_.measure_discretisation);
             counters_.merge(r.counters);
-            if (!r.candidate.feasible) break;
-            const int to = find_state(h.cf, r.outcome.end, r.outcome.contacts);
-            if (to < 0) break;
-            r.candidate.to = to;
-            graph_.candidates.push_back(r.candidate);
-            add_link(id, to, r.candidate.motion);
-            found = true;
+            for (Reached& t : r.targets) {
+              if (!t.candidate.feasible) continue;
+              const int to = find_state(h.cf, t.outcome.end, t.outcome.contacts);
+              if (to < 0) continue;
+              t.candidate.to = to;
+              graph_.candidates.push_back(t.candidate);
+              add_link(id, to, t.candidate.motion);
+              found = true;
+            }
             break;
           }
           if (found) break;
@@ -551,6 +769,18 @@ void Builder::retry_missing_links() {
       }
     }
   }
+}
+
+RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& contacts,
+                                             const Hypothesis& h) const {
+  RegionSignatures out;
+  for (RegionSignature& sig : target_signatures(contacts, h)) {
+    bool have = false;
+    for (const State& s : graph_.states)
+      if (s.cf == h.cf && signatures_[s.id] == sig) have = true;
+    if (!have) out.push_back(std::move(sig));
+  }
+  return out;
 }
 
 StateGraph Builder::run() {
@@ -647,16 +877,23 @@ MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,
   for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
     if (!(h.cf == candidate.cf)) continue;
     const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
-    for (size_t p = 0; p < plans; ++p)
-      for (const MotionVariant& v : motion_variants()) {
-        if (!variant_matters(v, h.plan_options[p])) continue;
-        // Replay only the motion the candidate reports (its last or successful one).
-        MotionOutcome dry = run_transition_motion(scene, from.pose, from.contacts,
-                                                  h.plan_options[p], h.cf, v, counters);
-        if (dry.motion != candidate.motion) continue;
-        return run_transition_motion(scene, from.pose, from.contacts, h.plan_options[p], h.cf,
-                                     v, counters, observer);
-      }
+    MotionStarts starts(scene, from, h);
+    for (size_t k = 0; k < starts.size(); ++k) {
+      const MotionStart& start = starts.at(k, counters);
+      if (!start.ok) continue;
+      for (size_t p = 0; p < plans; ++p)
+        for (const MotionVariant& v : motion_variants()) {
+          if (!variant_matters(v, h.plan_options[p])) continue;
+          // Replay only the motion the candidate reports (its last or successful one).
+          MotionOutcome dry = run_transition_motion(scene, start.pose, start.contacts,
+                                                    h.plan_options[p], h.cf, v, counters);
+          if (start.prefix + dry.motion != candidate.motion) continue;
+          MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts,
+                                                  h.plan_options[p], h.cf, v, counters, observer);
+          o.motion = start.prefix + o.motion;
+          return o;
+        }
+    }
   }
   last.reason = "no motion of this candidate could be replayed";
   return last;

@@ -35,6 +35,9 @@ struct Candidate {
   std::string reason;            // for failures: what collided or what went wrong, where
   int steps = 0;                 // motion steps taken in the motion reported
   int attempts = 0;              // motions tried
+  // When the CF has e-e-cross contacts: the crossing signs the transition must arrive with
+  // (region_signature, state_identity.h), e.g. "eA-eB +"; each sign is its own candidate.
+  std::string crossing;
 };
 
 struct GraphStats {

@@ -79,6 +79,7 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                        {"motion", c.motion},
                        {"attempts", c.attempts},
                        {"steps", c.steps}};
+    if (!c.crossing.empty()) cj["crossing"] = c.crossing;
     if (c.feasible) cj["to"] = c.to;
     if (!c.feasible) cj["reason"] = c.reason;
     cands.push_back(cj);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pcsg {
 
@@ -18,6 +19,71 @@ RegionSignature region_signature(const std::vector<PointContact>& contacts) {
 }
 
 namespace {
+
+// The largest piece of a turn about a contact normal made by one CF-compliant travel (to the
+// pose turned further, projected onto the CF): short enough that the straight pose
+// interpolation of the travel stays near the turn.
+constexpr double kMaxTurnPiece = M_PI / 4;
+
+}  // namespace
+
+TurnedWitness turned_about_normal(const SceneGeometry& scene, const Pose& pose,
+                                  const std::vector<PointContact>& contacts, int pivot,
+                                  double angle, MotionCounters& counters) {
+  TurnedWitness out;
+  const PointContact& c = contacts[pivot];
+  if (c.normal_B.norm() == 0) return out;
+  const ContactFormation cf = ContactFormation::of(contacts);
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(angle) / kMaxTurnPiece)));
+  Pose at = pose;
+  std::vector<PointContact> found;
+  for (int k = 1; k <= pieces; ++k) {
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(angle * k / pieces, c.normal_B));
+    Pose turned;
+    turned.quaternion = (q * pose.quaternion).normalized();
+    turned.position = q * (pose.position - c.point_B) + c.point_B;
+    const ProjectionResult proj = project_onto_cf(scene, turned, cf);
+    ++counters.detections;
+    if (!proj.ok || !connected_within_cf(scene, at, proj.pose, cf, counters)) return out;
+    at = proj.pose;
+    found = proj.contacts;
+  }
+  std::vector<bool> used(found.size(), false);
+  for (const PointContact& want : contacts) {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < found.size(); ++j) {
+      if (used[j] || !(found[j].a == want.a && found[j].b == want.b && found[j].type == want.type))
+        continue;
+      const double d = (found[j].p_A - want.p_A).norm();
+      if (d < best_d) best = static_cast<int>(j), best_d = d;
+    }
+    if (best < 0) return out;
+    used[best] = true;
+    out.contacts.push_back(found[best]);
+  }
+  out.ok = true;
+  out.pose = at;
+  return out;
+}
+
+namespace {
+
+// `X` (a witness of a CF of one e-e-cross contact) turned about the contact normal until the
+// edges cross at right angles, the crossing sign kept; not ok otherwise.
+TurnedWitness crossing_squared(const SceneGeometry& scene, const Pose& X,
+                               MotionCounters& counters) {
+  ++counters.detections;
+  const ContactReport rep = detect_contacts(scene, X);
+  if (rep.penetrating() || rep.contacts.size() != 1 || rep.contacts[0].type != PtcType::EECross)
+    return {};
+  const PointContact& c = rep.contacts[0];
+  // psi: the angle about n from t_A to t_B; turning A by theta turns t_A by theta.
+  const double psi = std::atan2(c.normal_B.dot(c.tangent_a_B.cross(c.tangent_b_B)),
+                                c.tangent_a_B.dot(c.tangent_b_B));
+  const double theta = psi - std::copysign(M_PI / 2, psi);
+  return turned_about_normal(scene, X, rep.contacts, 0, theta, counters);
+}
 
 Pose halfway(const Pose& a, const Pose& b) {
   Pose m;
@@ -80,6 +146,18 @@ bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
       // The turns keep every contact: the turned pose is in a's region by construction.
       const Pose t = aligned_by_symmetry(scene, a, target, symmetry);
       if (moved_either_way(scene, t, target, cf, counters)) return true;
+    }
+  }
+  if (cf.cardinality() == 1 && cf.entries().front().type == PtcType::EECross &&
+      midpoint_levels > 0) {
+    const TurnedWitness sa = crossing_squared(scene, a, counters);
+    const TurnedWitness sb = sa.ok ? crossing_squared(scene, b, counters) : TurnedWitness{};
+    if (sa.ok && sb.ok) {
+      if (moved_either_way(scene, sa.pose, sb.pose, cf, counters)) return true;
+      if (symmetry.A || symmetry.B) {
+        const Pose t = aligned_by_symmetry(scene, sa.pose, sb.pose, symmetry);
+        if (moved_either_way(scene, t, sb.pose, cf, counters)) return true;
+      }
     }
   }
   if (midpoint_levels <= 0) return false;

@@ -25,6 +25,19 @@ namespace pcsg {
 using RegionSignature = std::vector<std::tuple<int, int, int, int, int>>;
 RegionSignature region_signature(const std::vector<PointContact>& contacts);
 
+// A witness (`pose`, its exact `contacts`) turned by `angle` about the normal of the contact
+// `pivot` through its point, by CF-compliant travel in pieces: ok with the turned pose and its
+// contacts in the order of `contacts` (the same pair, nearest on A), or not ok when the turn
+// leaves the CF. The turn keeps that contact's point and normal and turns A's tangents there.
+struct TurnedWitness {
+  bool ok = false;
+  Pose pose;
+  std::vector<PointContact> contacts;
+};
+TurnedWitness turned_about_normal(const SceneGeometry& scene, const Pose& pose,
+                                  const std::vector<PointContact>& contacts, int pivot,
+                                  double angle, MotionCounters& counters);
+
 // The solids' axes of revolution (symmetry.h), when they have one.
 struct SceneSymmetry {
   std::optional<SymmetryAxis> B;  // in B's frame
@@ -46,9 +59,12 @@ Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& 
 //     b's, then about A's own axis until the orientations agree best (both turns keep every
 //     contact, symmetry.h), then 1. from there;
 //  2'. for each half-turn symmetry of A (of B): 1. and 2. toward b turned about its axis by
-//     pi, the same configuration as b with A's (B's) points relabelled (Example 1's ellipsoid across the
-//     rim: two witnesses that differ by a half turn about its long axis are joined in a few
-//     steps, while every travel toward b itself runs into the dish);
+//     pi, the same configuration as b with A's (B's) points relabelled (Example 1's ellipsoid
+//     across the rim: two witnesses that differ by a half turn about its long axis are joined in a
+//     few steps, while every travel toward b itself runs into the dish);
+//  2''. for a single e-e-cross contact, when `midpoint_levels` > 0: 1. and 2. between the
+//     witnesses each turned about its contact normal until the edges cross at right angles
+//     (keeping the crossing sign), where the contact is farthest from e-e-touch;
 //  3. with `midpoint_levels` > 0, the pose halfway between them (positions averaged,
 //     orientations slerped) projected onto `cf` and checked by exact detection serves as a
 //     waypoint that each end must reach the same way (with one level fewer).
