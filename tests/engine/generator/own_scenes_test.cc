@@ -84,17 +84,6 @@ TEST(TorusGraph, HasTheStatesItsShapeImplies) {
 }
 
 TEST(TorusGraph, RestsOnTheConvexBottomThroughItsHole) {
-  GTEST_SKIP() << "open defect (engine/contact, docs/paper-comparison.md): the seed search "
-                  "no longer reaches {(fA-f3, 2)} (before the numerics changes 8 states, 22 "
-                  "links; now 7, 18). The push that brings the torus up around the convex "
-                  "bottom (and the one down into the dish) is nearly coaxial: tilted 0.031 rad, "
-                  "as B's principal axis from its mesh vertices is 0.013 rad off B's axis. Near "
-                  "such a ring contact the f-f solves stall (Levenberg-Marquardt crawls along "
-                  "the ring: residual 0.027 after 4 iterations, 0.015 after 2000); 74 of the "
-                  "79 starts of the region fail, so detection reports no contact and no "
-                  "penetration at a pose that penetrates by 1.1e-3 (8.5e-5 L), and the "
-                  "first-touch bisection ends between such a false 'apart' and mesh-vertex "
-                  "evidence one ulp later, without a touching pose.";
   // Coaxially below B, the convex bottom (radius of curvature 2 at its tip) enters the hole
   // (radius 1) and touches the inner tube along a circle; tipped, at two points. A local
   // maximum of its own, reached from the dish's side by no LN motion: only the seed search
