@@ -85,9 +85,12 @@ TEST(StressScaling, Example1AtLengthUnits1eMinus4And1e4AndIllScaledObjects) {
   }
 }
 
-// Three generations of Example 2: disabled by default for its run time (one generation took
-// 171 s of CPU at the time of writing, beyond the test budget); run it with
-// --gtest_also_run_disabled_tests --gtest_filter='*Example2AtLengthUnits*'.
+// Three generations of Example 2: disabled by default for its run time (one generation takes
+// ~5 min of CPU, three beyond the test budget); run it with
+// --gtest_also_run_disabled_tests --gtest_filter='*Example2AtLengthUnits*'. Measured at commit
+// 25e1965 (session 4): it fails. At length unit 1e-4 the states are Example 2's, the links
+// are not (the graph's links depend on which motions happen to succeed: feasibility depends on
+// the witness, docs/paper-comparison.md); the 1e4 run was not completed.
 TEST(StressScaling, DISABLED_Example2AtLengthUnits1eMinus4And1e4) {
   const Generated ref = generate(example(2));
   for (const char* file : {"example2_scaled_1e-4.yaml", "example2_scaled_1e4.yaml"}) {
