@@ -699,14 +699,9 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) 
   const Pose& to = graph_.states[toward].pose;
   // The target as near the state's witness as the solids' symmetries allow: their half turns
   // and turns about an axis of revolution relabel points without moving anything.
-  std::vector<Pose> targets = {to};
-  for (const SymmetryAxis& h : symmetry_.half_turns_A)
-    targets.push_back(turned_about_A(to, h, M_PI));
-  for (const SymmetryAxis& h : symmetry_.half_turns_B)
-    targets.push_back(turned_about_B(to, h, M_PI));
   Pose target = to;
   double best = std::numeric_limits<double>::infinity();
-  for (const Pose& t : targets) {
+  for (const Pose& t : symmetric_images(to, symmetry_)) {
     const Pose a = aligned_by_symmetry(scene_, t, s.pose, symmetry_);
     const double angle = a.quaternion.angularDistance(s.pose.quaternion);
     if (angle < best) best = angle, target = a;

@@ -11,10 +11,10 @@ namespace pcsg {
 struct State {
   int id = -1;
   ContactFormation cf;
-  Pose pose;                          // the witness configuration X_BA
-  std::vector<PointContact> contacts; // its exact contacts, re-detected at `pose`
+  Pose pose;                           // the witness configuration X_BA
+  std::vector<PointContact> contacts;  // its exact contacts, re-detected at `pose`
   bool seed = false;
-  int depth = 0;                      // BFS depth from its seed
+  int depth = 0;  // BFS depth from its seed
 };
 
 enum class LinkKind { LN, GN };
@@ -30,11 +30,11 @@ struct Candidate {
   int from = -1;
   ContactFormation cf;
   bool feasible = false;
-  int to = -1;                   // the state reached, when feasible
-  std::string motion;            // the motion that worked, or the last one tried
-  std::string reason;            // for failures: what collided or what went wrong, where
-  int steps = 0;                 // motion steps taken in the motion reported
-  int attempts = 0;              // motions tried
+  int to = -1;         // the state reached, when feasible
+  std::string motion;  // the motion that worked, or the last one tried
+  std::string reason;  // for failures: what collided or what went wrong, where
+  int steps = 0;       // motion steps taken in the motion reported
+  int attempts = 0;    // motions tried
   // When the CF has e-e-cross contacts: the crossing signs the transition must arrive with
   // (region_signature, state_identity.h), e.g. "eA-eB +"; each sign is its own candidate.
   std::string crossing;
@@ -42,8 +42,8 @@ struct Candidate {
 
 struct GraphStats {
   double seconds = 0;
-  long collision_queries = 0;    // contact/collision detections at a pose
-  long pair_solves = 0;          // exact element-pair solves
+  long collision_queries = 0;  // contact/collision detections at a pose
+  long pair_solves = 0;        // exact element-pair solves
   long motion_steps = 0;
   // With GeneratorOptions::measure_discretisation: the largest residual of a kept contact and
   // the deepest penetration, both at the midpoints of accepted motion steps (before

@@ -133,14 +133,18 @@ SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
   return s;
 }
 
+std::vector<Pose> symmetric_images(const Pose& b, const SceneSymmetry& symmetry) {
+  std::vector<Pose> images = {b};
+  for (const SymmetryAxis& h : symmetry.half_turns_A) images.push_back(turned_about_A(b, h, M_PI));
+  for (const SymmetryAxis& h : symmetry.half_turns_B) images.push_back(turned_about_B(b, h, M_PI));
+  return images;
+}
+
 bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
                       const ContactFormation& cf, MotionCounters& counters,
                       const SceneSymmetry& symmetry, int midpoint_levels) {
   // b and b turned about each half-turn axis of A or of B: the same configuration
-  std::vector<Pose> targets = {b};
-  for (const SymmetryAxis& h : symmetry.half_turns_A) targets.push_back(turned_about_A(b, h, M_PI));
-  for (const SymmetryAxis& h : symmetry.half_turns_B) targets.push_back(turned_about_B(b, h, M_PI));
-  for (const Pose& target : targets) {
+  for (const Pose& target : symmetric_images(b, symmetry)) {
     if (moved_either_way(scene, a, target, cf, counters)) return true;
     if (symmetry.A || symmetry.B) {
       // The turns keep every contact: the turned pose is in a's region by construction.

@@ -40,12 +40,16 @@ TurnedWitness turned_about_normal(const SceneGeometry& scene, const Pose& pose,
 
 // The solids' axes of revolution (symmetry.h), when they have one.
 struct SceneSymmetry {
-  std::optional<SymmetryAxis> B;  // in B's frame
-  std::optional<SymmetryAxis> A;  // in A's frame
+  std::optional<SymmetryAxis> B;           // in B's frame
+  std::optional<SymmetryAxis> A;           // in A's frame
   std::vector<SymmetryAxis> half_turns_A;  // in A's frame (half_turn_axes)
   std::vector<SymmetryAxis> half_turns_B;  // in B's frame
   static SceneSymmetry of(const SceneGeometry& scene);
 };
+
+// b and b turned about each half-turn axis of A and of B: the same configuration, its points
+// relabelled (the targets a join may reach instead of b itself).
+std::vector<Pose> symmetric_images(const Pose& b, const SceneSymmetry& symmetry);
 
 // `a` turned about B's axis until A's centre is over b's, then about A's own axis until the
 // orientations agree best (each turn only when that solid is one of revolution): the same

@@ -34,9 +34,9 @@ TangentFrame tangent_frame(const Polynomial& g, const Eigen::Vector3d& p);
 // from its outward normal (every curvature of a sphere is +1/R seen from its solid side), so
 // convex faces have k1, k2 > 0 and concave ones (a dish seen from inside) negative ones.
 struct PrincipalCurvatures {
-  double k1 = 0, k2 = 0;       // k1 <= k2, in 1/length
-  Eigen::Vector3d d1, d2;      // unit principal directions, d1 x d2 = normal
-  Eigen::Vector3d normal;      // outward unit normal
+  double k1 = 0, k2 = 0;   // k1 <= k2, in 1/length
+  Eigen::Vector3d d1, d2;  // unit principal directions, d1 x d2 = normal
+  Eigen::Vector3d normal;  // outward unit normal
 };
 
 // The shape operator (the Hessian projected onto the tangent plane, divided by |grad g|) in the
@@ -49,8 +49,7 @@ std::optional<PrincipalCurvatures> principal_curvatures(const Polynomial& g,
 
 // Unit tangent of the curve g1 = g2 = 0 at p, along grad g1 x grad g2; zero where the two
 // surfaces are tangent.
-Eigen::Vector3d curve_tangent(const Polynomial& g1, const Polynomial& g2,
-                              const Eigen::Vector3d& p);
+Eigen::Vector3d curve_tangent(const Polynomial& g1, const Polynomial& g2, const Eigen::Vector3d& p);
 // |n1 x n2| at p: the sine of the angle at which the two surfaces cross.
 double normals_sine(const Polynomial& g1, const Polynomial& g2, const Eigen::Vector3d& p);
 
@@ -82,8 +81,7 @@ Projection project_onto_surface(const Polynomial& g, const Eigen::Vector3d& star
 Projection project_onto_curve(const Polynomial& g1, const Polynomial& g2,
                               const Eigen::Vector3d& start, const Tolerances& tol);
 // The point where three surfaces meet (a vertex): Newton on the square 3x3 system.
-Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2,
-                                const Polynomial& g3, const Eigen::Vector3d& start,
-                                const Tolerances& tol);
+Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2, const Polynomial& g3,
+                                const Eigen::Vector3d& start, const Tolerances& tol);
 
 }  // namespace pcsg
