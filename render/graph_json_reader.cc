@@ -145,6 +145,7 @@ StateGraph read_graph_json(const std::string& path, const SceneGeometry& scene) 
     cand.steps = c.value("steps", 0);
     cand.attempts = c.value("attempts", 0);
     cand.crossing = c.value("crossing", std::string());
+    if (c.contains("start")) cand.start = r.pose(c["start"], where + ", start");
     g.candidates.push_back(std::move(cand));
   }
   if (root.contains("stats") && root["stats"].is_object())

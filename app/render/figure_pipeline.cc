@@ -47,6 +47,8 @@ bool wanted(const CandidateTried& c, const PipelineOptions& o) {
 bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
                        const PipelineOptions& o, BoundedQueue<FigureEvent>& out) {
   std::vector<MotionFrame> frames;
+  // (the state at the witness the motion started from: a retry's is another of its witnesses)
+  const State from = candidate_start(scene, c.from, c.candidate);
   const MotionOutcome outcome =
       replay_candidate(scene, c.from, c.candidate, [&](const MotionFrame& f) { frames.push_back(f); });
   // a motion that stops because a kept contact left its elements reports its last frame as a
@@ -59,9 +61,8 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   std::vector<std::vector<PointContact>> contacts;
   for (const MotionFrame& f : frames) contacts.push_back(f.contacts);
   const bool failed_at_last = !frames.empty() && frames.back().phase == "collision";
-  const auto roles = render::assign_contact_roles(c.from.contacts, contacts, c.candidate.cf,
-                                                  kMatchSteps * scene.tol.motion_step,
-                                                  failed_at_last);
+  const auto roles = render::assign_contact_roles(
+      from.contacts, contacts, c.candidate.cf, kMatchSteps * scene.tol.motion_step, failed_at_last);
   const std::vector<int> chosen = select_frames(frames, o.stride, o.max_frames);
 
   TransitionStarted start;
@@ -74,7 +75,7 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   start.info.to = c.candidate.to;
   start.info.reason = outcome.reason;
   start.info.steps = outcome.steps;
-  start.start = c.from.contacts;
+  start.start = from.contacts;
   start.frames = static_cast<int>(chosen.size());
   start.replayed_steps = static_cast<int>(frames.size());
   for (int i : chosen) start.poses.push_back(frames[i].pose);

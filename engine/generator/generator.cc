@@ -637,7 +637,9 @@ void Builder::retry_from_other_witnesses() {
             const int to =
                 add_state(h.cf, t.outcome.end, t.outcome.contacts, false, from.depth + 1);
             t.candidate.to = to;
+            t.candidate.start = from.pose;
             graph_.candidates.push_back(t.candidate);
+            if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
             add_link(from.id, to, t.candidate.motion);
             reached.push_back(to);
           }
@@ -752,7 +754,9 @@ void Builder::retry_missing_links() {
               const int to = find_state(h.cf, t.outcome.end, t.outcome.contacts);
               if (to < 0) continue;
               t.candidate.to = to;
+              t.candidate.start = from.pose;
               graph_.candidates.push_back(t.candidate);
+              if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
               add_link(id, to, t.candidate.motion);
               found = true;
             }
@@ -865,8 +869,17 @@ StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& op
   return b.run();
 }
 
-MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,
+State candidate_start(const SceneGeometry& scene, const State& from, const Candidate& candidate) {
+  if (!candidate.start) return from;
+  State s = from;
+  s.pose = *candidate.start;
+  s.contacts = detect_contacts(scene, s.pose).contacts;
+  return s;
+}
+
+MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
                                const Candidate& candidate, const MotionObserver& observer) {
+  const State from = candidate_start(scene, state, candidate);
   MotionCounters counters;
   MotionOutcome last;
   for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {

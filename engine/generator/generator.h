@@ -52,6 +52,10 @@ StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& op
 // finite motions first, then combined ones and other directions on faces).
 std::vector<MotionVariant> motion_variants();
 
+// The state `from` at the witness the candidate's motion started from (Candidate::start, its
+// contacts re-detected there), or `from` itself when it started from the state's own witness.
+State candidate_start(const SceneGeometry& scene, const State& from, const Candidate& candidate);
+
 // Re-runs the motion that a candidate used (or the variants in order, for a failed one) with an
 // observer, for animations and frame-by-frame debugging. Deterministic.
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,

@@ -1,6 +1,7 @@
 #pragma once
 // The point-contact state graph (paper Section II-D, III): states <CF, witness>, the links
 // between neighbouring states, and every candidate transition that was tried.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct Candidate {
   // When the CF has e-e-cross contacts: the crossing signs the transition must arrive with
   // (region_signature, state_identity.h), e.g. "eA-eB +"; each sign is its own candidate.
   std::string crossing;
+  // The witness of `from` the motion started from, when it is not the state's own (the
+  // retries start from other witnesses of the same region); replays start there too.
+  std::optional<Pose> start;
 };
 
 struct GraphStats {

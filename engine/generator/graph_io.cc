@@ -22,6 +22,13 @@ ordered_json cf_json(const ContactFormation& cf, const SceneGeometry& scene) {
   return arr;
 }
 
+ordered_json pose_json(const Pose& pose) {
+  const Pose p = pose.canonical();
+  return {{"position", vec(p.position)},
+          {"quaternion", ordered_json::array({p.quaternion.w(), p.quaternion.x(), p.quaternion.y(),
+                                              p.quaternion.z()})}};
+}
+
 std::string dot_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -49,15 +56,11 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                           {"point", vec(c.point_B)},
                           {"normal", vec(c.normal_B)},
                           {"gap", c.gap}});
-    const Pose p = s.pose.canonical();
     states.push_back({{"id", s.id},
                       {"cf", cf_json(s.cf, scene)},
                       {"cf_text", s.cf.str(scene)},
                       {"card", s.cf.cardinality()},
-                      {"pose",
-                       {{"position", vec(p.position)},
-                        {"quaternion", ordered_json::array({p.quaternion.w(), p.quaternion.x(),
-                                                            p.quaternion.y(), p.quaternion.z()})}}},
+                      {"pose", pose_json(s.pose)},
                       {"contacts", contacts},
                       {"seed", s.seed},
                       {"depth", s.depth}});
@@ -80,6 +83,7 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                        {"attempts", c.attempts},
                        {"steps", c.steps}};
     if (!c.crossing.empty()) cj["crossing"] = c.crossing;
+    if (c.start) cj["start"] = pose_json(*c.start);
     if (c.feasible) cj["to"] = c.to;
     if (!c.feasible) cj["reason"] = c.reason;
     cands.push_back(cj);

@@ -208,5 +208,34 @@ TEST(ThreeSpheresGraph, EveryEdgeRimCfHasBothCrossingSigns) {
   }
 }
 
+// The retries start motions from a state's other witnesses (Candidate::start); a replay (the
+// figures' transition frames) must start there too, and so arrive where the generator did.
+// The three spheres' graph has such candidates (5 measured); none had been replayable.
+TEST(ThreeSpheresGraph, RetriedCandidatesReplayFromTheirOwnWitness) {
+  const Generated& g = three_spheres();
+  int retried = 0;
+  for (const Candidate& c : g.graph.candidates) {
+    if (!c.start) continue;
+    ++retried;
+    const State& from = g.graph.states[c.from];
+    std::vector<Pose> poses;
+    const MotionOutcome o =
+        replay_candidate(g.scene, from, c, [&](const MotionFrame& f) { poses.push_back(f.pose); });
+    const std::string what = "candidate " + std::to_string(&c - g.graph.candidates.data()) +
+                             " from " + std::to_string(c.from) + " to " + c.cf.str(g.scene);
+    ASSERT_FALSE(poses.empty()) << what << ": " << o.reason;
+    // (a "spin(...)" motion starts from the witness turned about the contact normal first)
+    if (c.motion.rfind("spin(", 0) != 0) {
+      EXPECT_LT((poses.front().position - c.start->position).norm(), g.scene.tol.distinct_points)
+          << what;
+    }
+    EXPECT_TRUE(o.feasible) << what << ": " << o.reason;
+    EXPECT_EQ(o.motion, c.motion) << what;
+    ASSERT_GE(c.to, 0);
+    EXPECT_EQ(ContactFormation::of(o.contacts), g.graph.states[c.to].cf) << what;
+  }
+  EXPECT_GT(retried, 0) << "the graph has no retried candidate: the test checks nothing";
+}
+
 }  // namespace
 }  // namespace pcsg
