@@ -91,7 +91,15 @@ std::optional<Twist> DriveSystem::solve() const {
     t[i] = target[i];
   }
   const Eigen::MatrixXd DN = D * N;
-  const Eigen::VectorXd z = DN.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(t);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(DN, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  // A drive direction whose gain is below this fraction of the strongest is one no motion
+  // gives (e.g. a point on an edge asked to move across it: the gain left is finite-difference
+  // noise, ~1e-7); solving for it anyway spent the whole step on it (three spheres: a contact
+  // sliding along an edge toward its vertex moved 3e-4 of a step per step, then drifted off
+  // the edge). 1e-4 leaves genuine weak directions (gains >= 1e-2 here) alone.
+  constexpr double kUnreachableGain = 1e-4;
+  svd.setThreshold(kUnreachableGain);
+  const Eigen::VectorXd z = svd.solve(t);
   const Twist s = N * z;
   // Progress: the drive residual must drop; otherwise the kept contacts forbid this drive.
   const double before = t.norm(), after = (D * s - t).norm();

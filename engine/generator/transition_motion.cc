@@ -154,6 +154,9 @@ class Motion {
   // element when approaching one, A's size times the angle between the contact normal and the
   // goal's when leaving an edge or vertex by rotation.
   double distance_to_goal(const Track& t) const;
+  // The unit tangent, in its solid's frame, of the edge on A's side (on_a) or B's side of a
+  // contact (zero when that side is not an edge).
+  Eigen::Vector3d edge_tangent(const Track& t, bool on_a) const;
   // Drift of the kept contacts and penetration at the midpoint of the step X -> Y, where the
   // motion is not re-projected: the discretisation error of the step grid.
   void measure_midpoint(const Pose& X, const Pose& Y);
@@ -206,6 +209,13 @@ std::optional<Discovery> Motion::discover(const std::vector<PointContact>& conta
   d.pose = proj.pose;
   d.contacts = rep.contacts;
   return d;
+}
+
+Eigen::Vector3d Motion::edge_tangent(const Track& t, bool on_a) const {
+  const Eigen::Vector3d tangent = on_a
+                                      ? Eigen::Vector3d(X_.rotation().transpose() * t.c.tangent_a_B)
+                                      : Eigen::Vector3d(t.c.tangent_b_B);
+  return tangent.norm() > 0 ? tangent.normalized() : Eigen::Vector3d::Zero();
 }
 
 double Motion::distance_to_goal(const Track& t) const {
@@ -430,6 +440,14 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
       auto u = direction_toward(S, goal, x, n);
       if (!u) return false;
       if (variant_.turn != 0) *u = Eigen::AngleAxisd(variant_.turn, n) * *u;
+      if (current.kind == ElementKind::Edge) {
+        // A point on an edge moves along the edge only: toward the vertex along its tangent.
+        // (The straight direction on the tangent plane has a part across the edge that no
+        // motion gives, and the least-squares drive then spent the whole step on it.)
+        const Eigen::Vector3d tangent = edge_tangent(t, on_a);
+        if (!(tangent.norm() > 0)) return false;
+        *u = tangent.dot(*u) >= 0 ? tangent : Eigen::Vector3d(-tangent);
+      }
       sys.add_drive(dx, *u, 1.0);
       if (variant_.fix_unchanged_side) sys.add_drive(dx_other, Eigen::Vector3d::Zero(), 1.0);
     } else {
@@ -458,6 +476,12 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   } else if (current.kind == ElementKind::Face) {
     // `current` is the new face now: slide away from the edge or vertex it was reached from.
     sys.add_drive(dx, into_face(S, current.index, t.left, x), 1.0);
+  } else if (current.kind == ElementKind::Edge && t.left.kind == ElementKind::Vertex) {
+    // `current` is the new edge: slide along it away from the vertex it was reached from.
+    Eigen::Vector3d tangent = edge_tangent(t, on_a);
+    if (!(tangent.norm() > 0)) return false;
+    const Eigen::Vector3d away = x - S.vertices[t.left.index].point;
+    sys.add_drive(dx, tangent.dot(away) >= 0 ? tangent : Eigen::Vector3d(-tangent), 1.0);
   } else {
     auto u = direction_toward(S, current, x, n);
     if (u) sys.add_drive(dx, *u, 1.0);

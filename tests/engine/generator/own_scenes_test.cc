@@ -132,14 +132,15 @@ TEST(ThreeSpheresGraph, WitnessesAreExactAndLinksConsistent) {
   expect_links_consistent(g);
 }
 
-TEST(ThreeSpheresGraph, EveryFaceAndEdgeTouchesEveryElementOfB) {
+TEST(ThreeSpheresGraph, EveryElementTouchesEveryElementOfB) {
   const Generated& g = three_spheres();
   const std::set<std::string> got = cfs_of(g);
   // A is small (1.63 tall, about 0.85 wide) against B (rim radius 3.17, dish radius of
-  // curvature 1.26 at its bottom, >= 1 = the spheres' radius): any face or edge of A can be
-  // its lowest point over any element of B, touching it alone. Edge against rim is
-  // e-e-cross.
-  for (const char* a : {"s1", "s2", "s3", "e12", "e_s1_s3", "e_s2_s3"})
+  // curvature 1.26 at its bottom, >= 1 = the spheres' radius): any face, edge or vertex of A
+  // can be its lowest point over any element of B, touching it alone. Edge against rim is
+  // e-e-cross. (The vertex CFs were reached only once transitions slid a contact along an
+  // edge to its vertex: 2 of 10 before.)
+  for (const char* a : {"s1", "s2", "s3", "e12", "e_s1_s3", "e_s2_s3", "v123", "v123#2"})
     for (const char* b : {"f1", "e1", "f2", "e2", "f3"}) {
       const std::string cf = std::string("{(") + a + "-" + b + ", 1)}";
       EXPECT_TRUE(got.count(cf)) << cf << " missing";
@@ -157,11 +158,6 @@ TEST(ThreeSpheresGraph, StatesAreClosedUnderTheLensThreeFoldSymmetry) {
 }
 
 TEST(ThreeSpheresGraph, StatesAreClosedUnderTheLensMirrorSymmetry) {
-  GTEST_SKIP() << "open defect (docs/paper-comparison.md): of the ten vertex CFs (v123 and "
-                  "v123#2 against f1, e1, f2, e2, f3) only {(v123-f3, 1)} and "
-                  "{(v123#2-f1, 1)} are found, each by an upward probe, and every "
-                  "transition toward or away from a vertex fails ('makes no progress' or a "
-                  "contact leaving its elements), so the mirror images are missing";
   const Generated& g = three_spheres();
   const std::set<std::string> got = cfs_of(g);
   for (const State& s : g.graph.states) {
@@ -187,13 +183,6 @@ std::map<std::string, std::vector<RegionSignature>> regions_by_cf(const Generate
 }
 
 TEST(ThreeSpheresGraph, NoTwoStatesOfOneCfShareTheirCrossingSigns) {
-  GTEST_SKIP() << "open defect (engine/generator/state_identity.cc): {(e_s2_s3-e2, 1)} has "
-                  "three states, two of sign -1 that no join proves one (witnesses at the two "
-                  "ends of e_s2_s3, A's points z = -0.77 and +0.71, crossing angles -179 and "
-                  "-5.5 degrees; straight, by-contact, right-angle-turned and midpoint joins "
-                  "all fail). Until the crossing-sign candidates reached every edge-rim CF's "
-                  "second region (EveryEdgeRimCfHasBothCrossingSigns), this test passed on a "
-                  "graph that lacked three of those regions.";
   for (const auto& [cf, sigs] : regions_by_cf(three_spheres()))
     EXPECT_TRUE(std::adjacent_find(sigs.begin(), sigs.end()) == sigs.end())
         << cf << ": " << sigs.size() << " states, two with one signature (an unmerged "
