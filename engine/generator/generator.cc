@@ -196,8 +196,8 @@ class MotionStarts {
     const Eigen::Vector3d other_tangent = on_a ? c.tangent_b_B : c.tangent_a_B;
     std::optional<Eigen::Vector3d> d;
     if (element_dimension(goal) < element_dimension(current) && other_tangent.norm() > 0)
-      d = on_a ? direction_toward(scene_.A, goal, c.p_A, normal_in_A(s_.pose, c))
-               : direction_toward(scene_.B, goal, c.p_B, n);
+      d = on_a ? direction_toward(scene_.A, goal, c.p_A, normal_in_A(s_.pose, c), scene_.tol)
+               : direction_toward(scene_.B, goal, c.p_B, n, scene_.tol);
     if (!d) {
       turns_.push_back({pivot, M_PI, "halfturn"});
       return;

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "engine/contact/pair_solver.h"
+#include "engine/geometry/surface.h"
 
 namespace pcsg {
 
@@ -185,20 +186,53 @@ Eigen::Vector3d tangential(const Eigen::Vector3d& v, const Eigen::Vector3d& n) {
 
 }  // namespace
 
+std::optional<Eigen::Vector3d> nearest_point_on_edge(const Solid& S, int edge,
+                                                     const Eigen::Vector3d& x,
+                                                     const Tolerances& tol) {
+  const Edge& e = S.edges[edge];
+  if (e.samples.empty()) return std::nullopt;
+  const Polynomial& g1 = S.surfaces[e.surface1];
+  const Polynomial& g2 = S.surfaces[e.surface2];
+  // Secant iterations on the arc length s for f(s) = (q(s) - x) . t(s), zero at the foot;
+  // each new point is the tangent step projected back onto the curve. A plain tangent step
+  // shrinks the error only by the factor (distance x curvature), which nears 1 for x far
+  // inside a curved rim; the secant slope f' = 1 - (x - q) . k takes that into account.
+  const CurveSample& start = e.samples[nearest_sample(e, x)];
+  Eigen::Vector3d q = start.point;
+  Eigen::Vector3d t = curve_tangent(g1, g2, q);
+  double f = (q - x).dot(t);
+  double step = -f;  // first step: along the tangent to the perpendicular's foot
+  // A few secant steps reach round-off from a sample's spacing away; the cap stops a curve
+  // whose tangent flips (a cusp), keeping the best point so far.
+  constexpr int kMaxFootIterations = 30;
+  for (int it = 0; it < kMaxFootIterations && std::abs(f) > tol.solve_residual; ++it) {
+    const Projection p = project_onto_curve(g1, g2, q + step * t, tol);
+    if (!p.converged) break;
+    const Eigen::Vector3d t_new = curve_tangent(g1, g2, p.point);
+    const double f_new = (p.point - x).dot(t_new);
+    if (!(std::abs(f_new) < std::abs(f))) break;
+    // the arc length actually travelled, to first order
+    const double ds = (p.point - q).dot(0.5 * (t + t_new));
+    const double slope = ds != 0 ? (f_new - f) / ds : 0;
+    q = p.point;
+    t = t_new;
+    f = f_new;
+    step = slope > 0 ? -f / slope : -f;
+  }
+  return q;
+}
+
 std::optional<Eigen::Vector3d> direction_toward(const Solid& S, ElementId el,
                                                 const Eigen::Vector3d& x,
-                                                const Eigen::Vector3d& n_S) {
+                                                const Eigen::Vector3d& n_S,
+                                                const Tolerances& tol) {
   Eigen::Vector3d q = x;
   if (el.kind == ElementKind::Vertex) {
     q = S.vertices[el.index].point;
   } else if (el.kind == ElementKind::Edge) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const CurveSample& cs : S.edges[el.index].samples)
-      if ((cs.point - x).squaredNorm() < best) {
-        best = (cs.point - x).squaredNorm();
-        q = cs.point;
-      }
-    if (!std::isfinite(best)) return std::nullopt;
+    const std::optional<Eigen::Vector3d> foot = nearest_point_on_edge(S, el.index, x, tol);
+    if (!foot) return std::nullopt;
+    q = *foot;
   } else {
     q = S.faces[el.index].interior_point;
   }
