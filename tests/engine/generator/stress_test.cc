@@ -180,14 +180,16 @@ TEST(StressFrames, Example1FarFromTheOriginAndRotatedHasItsStates) {
 }
 
 TEST(StressFrames, Example1FarFromTheOriginAndRotated) {
-  GTEST_SKIP() << "generator defect (feasibility depends on the witness; the seed search's "
-                  "frame depends on B's frame, docs/paper-comparison.md): the same 8 states "
-                  "(test above), but of Example 1's 20 directed links the far scene lacks "
-                  "{(fA-e1, 1), (fA-f1, 1)} -> {(fA-e1, 2)} and {(fA-e1, 2)} -> {(fA-f1, 2)} "
-                  "and has {(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} instead. The waypoint "
-                  "retries made it pass on their own; merged with the solver changes of the "
-                  "same session (Levenberg-Marquardt damping, support-point retries) the "
-                  "motions branch differently again.";
+  GTEST_SKIP() << "generator defect (docs/paper-comparison.md, Invariance): the same 8 CFs "
+                  "(test above; 10 states, {(fA-f2, 1)} three times), but of Example 1's 27 "
+                  "links the far scene lacks {(fA-f1, 2)} -> {(fA-e1, 2)} and has "
+                  "{(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} instead. Main cause, measured: the "
+                  "drive solve inverts the finite-difference noise of the rates' geometric "
+                  "rank deficiency (a point on a surface moves in its tangent plane), so the "
+                  "drive twists of one witness differ in B's rotated frame by O(1); dropping "
+                  "singular values below 1e-3 makes them covariant; with the reverse links of "
+                  "equal-cardinality transitions this test then passes, but Example 1 gains "
+                  "{(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} (28 links).";
   const auto& [ref, got] = far_rotated_example1();
   expect_same_graph(got, ref);
 }
