@@ -92,7 +92,16 @@ std::optional<Twist> DriveSystem::solve() const {
     t[i] = target[i];
   }
   const Eigen::MatrixXd DN = D * N;
-  const Eigen::VectorXd z = DN.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(t);
+  // Drive rows are finite-difference rates (contact_rates) whose geometric rank deficiencies
+  // (a point on a surface moves in its tangent plane, a unit normal turns perpendicular to
+  // itself) show as singular values at their noise level, ~solve_residual / rate_step = 1e-5
+  // of the largest: inverting those amplifies the noise into an O(1) part of the twist, which
+  // differs with the scene's frame. Singular values below 1e-3 of the largest are dropped
+  // (100x above that noise; a drive that weak is no drive).
+  constexpr double kDriveRankRelative = 1e-3;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(DN, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  svd.setThreshold(kDriveRankRelative);
+  const Eigen::VectorXd z = svd.solve(t);
   const Twist s = N * z;
   // Progress: the drive residual must drop; otherwise the kept contacts forbid this drive.
   const double before = t.norm(), after = (D * s - t).norm();
