@@ -179,17 +179,10 @@ TEST(StressFrames, Example1FarFromTheOriginAndRotatedHasItsStates) {
   testing::expect_witnesses_valid(got);
 }
 
+// Skipped until session 5 with a link or two different: fixed by covariant drive solves
+// (DriveSystem::solve drops the finite-difference rates' noise directions), exact feet on
+// edges and the reverse links of equal-cardinality transitions (docs/paper-comparison.md).
 TEST(StressFrames, Example1FarFromTheOriginAndRotated) {
-  GTEST_SKIP() << "generator defect (docs/paper-comparison.md, Invariance): the same 8 CFs "
-                  "(test above; 10 states, {(fA-f2, 1)} three times), but of Example 1's 27 "
-                  "links the far scene lacks {(fA-f1, 2)} -> {(fA-e1, 2)} and has "
-                  "{(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} instead. Main cause, measured: the "
-                  "drive solve inverts the finite-difference noise of the rates' geometric "
-                  "rank deficiency (a point on a surface moves in its tangent plane), so the "
-                  "drive twists of one witness differ in B's rotated frame by O(1); dropping "
-                  "singular values below 1e-3 makes them covariant; with the reverse links of "
-                  "equal-cardinality transitions this test then passes, but Example 1 gains "
-                  "{(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} (28 links).";
   const auto& [ref, got] = far_rotated_example1();
   expect_same_graph(got, ref);
 }
