@@ -196,8 +196,8 @@ class MotionStarts {
     const Eigen::Vector3d other_tangent = on_a ? c.tangent_b_B : c.tangent_a_B;
     std::optional<Eigen::Vector3d> d;
     if (element_dimension(goal) < element_dimension(current) && other_tangent.norm() > 0)
-      d = on_a ? direction_toward(scene_.A, goal, c.p_A, normal_in_A(s_.pose, c))
-               : direction_toward(scene_.B, goal, c.p_B, n);
+      d = on_a ? direction_toward(scene_.A, goal, c.p_A, normal_in_A(s_.pose, c), scene_.tol)
+               : direction_toward(scene_.B, goal, c.p_B, n, scene_.tol);
     if (!d) {
       turns_.push_back({pivot, M_PI, "halfturn"});
       return;
@@ -439,8 +439,18 @@ void Builder::add_link(int from, int to, const std::string& motion) {
   linked_[{from, to}] = true;
   graph_.links.push_back({from, to, LinkKind::LN, motion});
   // The reverse of an LN transition that drops cardinality is a GN link (Section II-D).
-  if (graph_.states[to].cf.cardinality() < graph_.states[from].cf.cardinality()) {
+  const int card_from = graph_.states[from].cf.cardinality();
+  const int card_to = graph_.states[to].cf.cardinality();
+  if (card_to < card_from) {
     graph_.links.push_back({to, from, LinkKind::GN, motion});
+  } else if (card_to == card_from && !linked_[{to, from}]) {
+    // Between states of one cardinality the reversed motion is itself an LN transition: it
+    // keeps the same contacts, crosses the same boundary the other way and ends in `from`'s
+    // region. Without it a link's direction would depend on which witness the motion
+    // happened to start from (a rigid motion of B's frame swapped the direction of
+    // {(fA-e1, 2)} <-> {(fA-e1, 1), (fA-f1, 1)} in Example 1).
+    linked_[{to, from}] = true;
+    graph_.links.push_back({to, from, LinkKind::LN, "reverse of " + motion});
   }
 }
 

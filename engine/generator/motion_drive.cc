@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "engine/contact/pair_solver.h"
+#include "engine/geometry/surface.h"
 
 namespace pcsg {
 
@@ -91,14 +92,17 @@ std::optional<Twist> DriveSystem::solve() const {
     t[i] = target[i];
   }
   const Eigen::MatrixXd DN = D * N;
+  // Drive rows are finite-difference rates (contact_rates) whose geometric rank deficiencies
+  // (a point on a surface moves in its tangent plane, a unit normal turns perpendicular to
+  // itself) show as singular values at their noise level, ~solve_residual / rate_step = 1e-5
+  // of the largest: inverting those amplifies the noise into an O(1) part of the twist, which
+  // differs with the scene's frame (Example 1 rotated: step-0 twists differed by O(1)), and
+  // spends the step on a direction no motion gives (three spheres: a contact sliding along an
+  // edge toward its vertex moved 3e-4 of a step per step). Singular values below 1e-3 of the
+  // largest are dropped (100x above that noise; a drive that weak is no drive).
+  constexpr double kDriveRankRelative = 1e-3;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(DN, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  // A drive direction whose gain is below this fraction of the strongest is one no motion
-  // gives (e.g. a point on an edge asked to move across it: the gain left is finite-difference
-  // noise, ~1e-7); solving for it anyway spent the whole step on it (three spheres: a contact
-  // sliding along an edge toward its vertex moved 3e-4 of a step per step, then drifted off
-  // the edge). 1e-4 leaves genuine weak directions (gains >= 1e-2 here) alone.
-  constexpr double kUnreachableGain = 1e-4;
-  svd.setThreshold(kUnreachableGain);
+  svd.setThreshold(kDriveRankRelative);
   const Eigen::VectorXd z = svd.solve(t);
   const Twist s = N * z;
   // Progress: the drive residual must drop; otherwise the kept contacts forbid this drive.
@@ -193,20 +197,53 @@ Eigen::Vector3d tangential(const Eigen::Vector3d& v, const Eigen::Vector3d& n) {
 
 }  // namespace
 
+std::optional<Eigen::Vector3d> nearest_point_on_edge(const Solid& S, int edge,
+                                                     const Eigen::Vector3d& x,
+                                                     const Tolerances& tol) {
+  const Edge& e = S.edges[edge];
+  if (e.samples.empty()) return std::nullopt;
+  const Polynomial& g1 = S.surfaces[e.surface1];
+  const Polynomial& g2 = S.surfaces[e.surface2];
+  // Secant iterations on the arc length s for f(s) = (q(s) - x) . t(s), zero at the foot;
+  // each new point is the tangent step projected back onto the curve. A plain tangent step
+  // shrinks the error only by the factor (distance x curvature), which nears 1 for x far
+  // inside a curved rim; the secant slope f' = 1 - (x - q) . k takes that into account.
+  const CurveSample& start = e.samples[nearest_sample(e, x)];
+  Eigen::Vector3d q = start.point;
+  Eigen::Vector3d t = curve_tangent(g1, g2, q);
+  double f = (q - x).dot(t);
+  double step = -f;  // first step: along the tangent to the perpendicular's foot
+  // A few secant steps reach round-off from a sample's spacing away; the cap stops a curve
+  // whose tangent flips (a cusp), keeping the best point so far.
+  constexpr int kMaxFootIterations = 30;
+  for (int it = 0; it < kMaxFootIterations && std::abs(f) > tol.solve_residual; ++it) {
+    const Projection p = project_onto_curve(g1, g2, q + step * t, tol);
+    if (!p.converged) break;
+    const Eigen::Vector3d t_new = curve_tangent(g1, g2, p.point);
+    const double f_new = (p.point - x).dot(t_new);
+    if (!(std::abs(f_new) < std::abs(f))) break;
+    // the arc length actually travelled, to first order
+    const double ds = (p.point - q).dot(0.5 * (t + t_new));
+    const double slope = ds != 0 ? (f_new - f) / ds : 0;
+    q = p.point;
+    t = t_new;
+    f = f_new;
+    step = slope > 0 ? -f / slope : -f;
+  }
+  return q;
+}
+
 std::optional<Eigen::Vector3d> direction_toward(const Solid& S, ElementId el,
                                                 const Eigen::Vector3d& x,
-                                                const Eigen::Vector3d& n_S) {
+                                                const Eigen::Vector3d& n_S,
+                                                const Tolerances& tol) {
   Eigen::Vector3d q = x;
   if (el.kind == ElementKind::Vertex) {
     q = S.vertices[el.index].point;
   } else if (el.kind == ElementKind::Edge) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const CurveSample& cs : S.edges[el.index].samples)
-      if ((cs.point - x).squaredNorm() < best) {
-        best = (cs.point - x).squaredNorm();
-        q = cs.point;
-      }
-    if (!std::isfinite(best)) return std::nullopt;
+    const std::optional<Eigen::Vector3d> foot = nearest_point_on_edge(S, el.index, x, tol);
+    if (!foot) return std::nullopt;
+    q = *foot;
   } else {
     q = S.faces[el.index].interior_point;
   }

@@ -51,10 +51,19 @@ struct DriveSystem {
 Twist minimum_norm_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r);
 
 // Geometry of a target element on solid S (directions in S's own frame).
-// Unit direction on the tangent plane (normal n_S) from x toward the nearest point of `el`.
+// The nearest point of edge `edge` of S to x near x's nearest sample: the foot of the
+// perpendicular, exact to tol.solve_residual (not the nearest sample: directions toward a
+// sample turn with the spacing over the distance, differently for every tracing of the same
+// curve, so they would depend on the solid's frame). nullopt for an edge without samples.
+std::optional<Eigen::Vector3d> nearest_point_on_edge(const Solid& S, int edge,
+                                                     const Eigen::Vector3d& x,
+                                                     const Tolerances& tol);
+// Unit direction on the tangent plane (normal n_S) from x toward the nearest point of `el`
+// (exact for an edge, nearest_point_on_edge).
 std::optional<Eigen::Vector3d> direction_toward(const Solid& S, ElementId el,
                                                 const Eigen::Vector3d& x,
-                                                const Eigen::Vector3d& n_S);
+                                                const Eigen::Vector3d& n_S,
+                                                const Tolerances& tol);
 // The middle of the outward normal cone of an edge or vertex at x (normalised sum of the
 // normals of the surfaces through it); the face normal for a face.
 Eigen::Vector3d cone_middle(const Solid& S, ElementId el, const Eigen::Vector3d& x);

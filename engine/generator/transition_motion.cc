@@ -226,10 +226,8 @@ double Motion::distance_to_goal(const Track& t) const {
   const Eigen::Vector3d x = on_a ? t.c.p_A : t.c.p_B;
   if (element_dimension(goal) < element_dimension(current)) {
     if (goal.kind == ElementKind::Vertex) return (S.vertices[goal.index].point - x).norm();
-    double best = std::numeric_limits<double>::infinity();
-    for (const CurveSample& cs : S.edges[goal.index].samples)
-      best = std::min(best, (cs.point - x).norm());
-    return best;
+    const std::optional<Eigen::Vector3d> foot = nearest_point_on_edge(S, goal.index, x, scene_.tol);
+    return foot ? (*foot - x).norm() : std::numeric_limits<double>::infinity();
   }
   const Eigen::Vector3d n = changing_side_normal(scene_, X_, t.c, on_a);
   const double cosine = std::clamp(n.dot(cone_middle(S, goal, x)), -1.0, 1.0);
@@ -437,7 +435,7 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   if (t.phase == Phase::Drive) {
     if (approaching) {
       // Slide the contact point toward the new, lower-dimensional element.
-      auto u = direction_toward(S, goal, x, n);
+      auto u = direction_toward(S, goal, x, n, scene_.tol);
       if (!u) return false;
       if (variant_.turn != 0) *u = Eigen::AngleAxisd(variant_.turn, n) * *u;
       if (current.kind == ElementKind::Edge) {
@@ -460,7 +458,7 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
       if (current.kind == ElementKind::Edge) add_edge_rotation(t, F, dn, dir, sys);
       else if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
       if (current.kind == ElementKind::Vertex) {
-        auto u = direction_toward(S, goal, x, n);
+        auto u = direction_toward(S, goal, x, n, scene_.tol);
         if (u) sys.add_drive(dx, *u, 1.0);
       }
     }
@@ -483,7 +481,7 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
     const Eigen::Vector3d away = x - S.vertices[t.left.index].point;
     sys.add_drive(dx, tangent.dot(away) >= 0 ? tangent : Eigen::Vector3d(-tangent), 1.0);
   } else {
-    auto u = direction_toward(S, current, x, n);
+    auto u = direction_toward(S, current, x, n, scene_.tol);
     if (u) sys.add_drive(dx, *u, 1.0);
   }
   return true;

@@ -179,15 +179,10 @@ TEST(StressFrames, Example1FarFromTheOriginAndRotatedHasItsStates) {
   testing::expect_witnesses_valid(got);
 }
 
+// Skipped until session 5 with a link or two different: fixed by covariant drive solves
+// (DriveSystem::solve drops the finite-difference rates' noise directions), exact feet on
+// edges and the reverse links of equal-cardinality transitions (docs/paper-comparison.md).
 TEST(StressFrames, Example1FarFromTheOriginAndRotated) {
-  GTEST_SKIP() << "generator defect (feasibility depends on the witness; the seed search's "
-                  "frame depends on B's frame, docs/paper-comparison.md): the same 8 states "
-                  "(test above), but of Example 1's 20 directed links the far scene lacks "
-                  "{(fA-e1, 1), (fA-f1, 1)} -> {(fA-e1, 2)} and {(fA-e1, 2)} -> {(fA-f1, 2)} "
-                  "and has {(fA-e1, 2)} -> {(fA-e1, 1), (fA-f1, 1)} instead. The waypoint "
-                  "retries made it pass on their own; merged with the solver changes of the "
-                  "same session (Levenberg-Marquardt damping, support-point retries) the "
-                  "motions branch differently again.";
   const auto& [ref, got] = far_rotated_example1();
   expect_same_graph(got, ref);
 }
