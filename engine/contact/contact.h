@@ -79,6 +79,8 @@ struct ContactReport {
   std::vector<PointContact> near;         // local minima with gap in (contact_gap, margin]
   std::vector<Penetration> penetrations;  // empty unless A and B interpenetrate
   int failed_solves = 0;  // candidate pair solves that did not converge (diagnostics)
+  // Answered from the context's recent reports (report_cache.h): no detection was run.
+  bool recalled = false;
   bool penetrating() const { return !penetrations.empty(); }
 };
 
@@ -96,7 +98,8 @@ struct DetectOptions {
 
 // All isolated contacts at the pose, each classified by the elements whose relative interiors
 // hold its two closest points; two separate contacts of the same pair are reported twice.
-// Thread-safe: any number of threads may query one context.
+// Thread-safe: any number of threads may query one context. A query repeated bit for bit is
+// answered from the context's recent reports (report_cache.h), with `recalled` set.
 ContactReport detect_contacts(const ContactContext& context, const Pose& X_BA,
                               const DetectOptions& options = {});
 // The same with the scene's context from a small process-wide cache (contact_context.h:

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/contact/report_cache.h"
 #include "engine/core/pose.h"
 #include "engine/geometry/scene_geometry.h"
 
@@ -91,6 +92,8 @@ class ContactContext {
                                   std::vector<std::pair<int, int>>& pairs, int max_pairs) const;
   // An upper bound on how far any point of A's inflated mesh moves from pose X to pose Y.
   double displacement(const Pose& X, const Pose& Y) const;
+  // The reports of recent queries (detect_contacts answers a repeated query from them).
+  ReportCache& recent_reports() const { return *recent_reports_; }
 
  private:
   struct Models;
@@ -98,6 +101,7 @@ class ContactContext {
   double band_ = 0;
   MeshIndex index_A_, index_B_;
   std::unique_ptr<Models> models_;
+  std::unique_ptr<ReportCache> recent_reports_;
 };
 
 // The nearby triangle pairs of a bisection's shrinking bracket: gathered at the first step and

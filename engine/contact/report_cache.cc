@@ -1,0 +1,41 @@
+#include "engine/contact/report_cache.h"
+
+#include <cstring>
+
+namespace pcsg {
+
+ReportCache::Key ReportCache::key(const Pose& X_BA, double near_margin) {
+  const double values[8] = {X_BA.position.x(),   X_BA.position.y(),   X_BA.position.z(),
+                            X_BA.quaternion.w(), X_BA.quaternion.x(), X_BA.quaternion.y(),
+                            X_BA.quaternion.z(), near_margin};
+  Key k;
+  static_assert(sizeof values == sizeof k, "eight 64-bit words");
+  std::memcpy(k.data(), values, sizeof k);
+  return k;
+}
+
+size_t ReportCache::Hash::operator()(const Key& k) const {
+  // FNV-1a over the words (one multiply per word)
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::uint64_t w : k) h = (h ^ w) * 1099511628211ull;
+  return static_cast<size_t>(h ^ (h >> 32));
+}
+
+std::optional<ContactReport> ReportCache::recall(const Key& key) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = reports_.find(key);
+  if (it == reports_.end()) return std::nullopt;
+  return it->second;
+}
+
+void ReportCache::remember(const Key& key, const ContactReport& report) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!reports_.emplace(key, report).second) return;  // another thread was first
+  order_.push_back(key);
+  if (order_.size() > capacity_) {
+    reports_.erase(order_.front());
+    order_.pop_front();
+  }
+}
+
+}  // namespace pcsg

@@ -1,0 +1,87 @@
+// ReportCache (report_cache.h): a repeated detection query is answered from the context's
+// recent reports, and the answer is the report a fresh query gives.
+#include <gtest/gtest.h>
+
+#include "engine/contact/contact.h"
+#include "engine/contact/contact_context.h"
+#include "tests/engine/contact/test_shapes.h"
+
+namespace pcsg {
+namespace {
+
+using K = testkit::BowlConstants;
+
+// The ellipsoid lying in the dish (paper Fig. 5b): two f-f contacts.
+Pose resting_pose() {
+  Pose X;
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+  X.position = {0, 0, 6.25 * K::a + 1 / (25 * K::a) - K::b};
+  return X;
+}
+
+void expect_same_report(const ContactReport& x, const ContactReport& y) {
+  ASSERT_EQ(x.contacts.size(), y.contacts.size());
+  for (size_t i = 0; i < x.contacts.size(); ++i) {
+    EXPECT_TRUE(x.contacts[i].a == y.contacts[i].a && x.contacts[i].b == y.contacts[i].b);
+    EXPECT_EQ(x.contacts[i].point_B, y.contacts[i].point_B);  // bit for bit
+    EXPECT_EQ(x.contacts[i].gap, y.contacts[i].gap);
+  }
+  EXPECT_EQ(x.near.size(), y.near.size());
+  EXPECT_EQ(x.penetrations.size(), y.penetrations.size());
+}
+
+TEST(ReportCache, RepeatedQueryIsRecalledAndEqualsAFreshOne) {
+  const SceneGeometry scene =
+      testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid(1));
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  const ContactReport first = detect_contacts(ctx, X);
+  EXPECT_FALSE(first.recalled);
+  ASSERT_EQ(first.contacts.size(), 2u);
+  const ContactReport again = detect_contacts(ctx, X);
+  EXPECT_TRUE(again.recalled);
+  expect_same_report(first, again);
+  // A fresh context (no recent reports) gives the same report.
+  const ContactContext fresh(scene);
+  const ContactReport anew = detect_contacts(fresh, X);
+  EXPECT_FALSE(anew.recalled);
+  expect_same_report(anew, again);
+}
+
+TEST(ReportCache, AnotherPoseOrMarginIsQueriedAnew) {
+  const SceneGeometry scene =
+      testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid(1));
+  const ContactContext ctx(scene);
+  const Pose X = resting_pose();
+  detect_contacts(ctx, X);
+  // the same pose with a near margin: another query (its report has the near minima too)
+  DetectOptions near;
+  near.near_margin = scene.tol.candidate_band;
+  EXPECT_FALSE(detect_contacts(ctx, X, near).recalled);
+  EXPECT_TRUE(detect_contacts(ctx, X, near).recalled);
+  // one ulp higher: another pose, another query
+  Pose Y = X;
+  Y.position.z() = std::nextafter(Y.position.z(), INFINITY);
+  EXPECT_FALSE(detect_contacts(ctx, Y).recalled);
+}
+
+TEST(ReportCache, KeepsAtMostItsCapacityDroppingTheOldest) {
+  ReportCache cache(2);
+  ContactReport r;
+  r.failed_solves = 1;
+  Pose X;
+  const ReportCache::Key k0 = ReportCache::key(X, 0);
+  X.position.x() = 1;
+  const ReportCache::Key k1 = ReportCache::key(X, 0);
+  X.position.x() = 2;
+  const ReportCache::Key k2 = ReportCache::key(X, 0);
+  cache.remember(k0, r);
+  cache.remember(k1, r);
+  cache.remember(k2, r);
+  EXPECT_FALSE(cache.recall(k0).has_value());
+  ASSERT_TRUE(cache.recall(k1).has_value());
+  EXPECT_EQ(cache.recall(k2)->failed_solves, 1);
+}
+
+}  // namespace
+}  // namespace pcsg
