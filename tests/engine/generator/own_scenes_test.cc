@@ -187,13 +187,6 @@ std::map<std::string, std::vector<RegionSignature>> regions_by_cf(const Generate
 }
 
 TEST(ThreeSpheresGraph, NoTwoStatesOfOneCfShareTheirCrossingSigns) {
-  GTEST_SKIP() << "open defect (engine/generator/state_identity.cc): {(e_s2_s3-e2, 1)} has "
-                  "three states, two of sign -1 that no join proves one (witnesses at the two "
-                  "ends of e_s2_s3, A's points z = -0.77 and +0.71, crossing angles -179 and "
-                  "-5.5 degrees; straight, by-contact, right-angle-turned and midpoint joins "
-                  "all fail). Until the crossing-sign candidates reached every edge-rim CF's "
-                  "second region (EveryEdgeRimCfHasBothCrossingSigns), this test passed on a "
-                  "graph that lacked three of those regions.";
   for (const auto& [cf, sigs] : regions_by_cf(three_spheres()))
     EXPECT_TRUE(std::adjacent_find(sigs.begin(), sigs.end()) == sigs.end())
         << cf << ": " << sigs.size() << " states, two with one signature (an unmerged "
