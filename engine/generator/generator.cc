@@ -11,6 +11,7 @@
 #include <thread>
 #include <tuple>
 
+#include "engine/generator/cf_parameter_path.h"
 #include "engine/generator/hypothesis.h"
 #include "engine/generator/motion_drive.h"
 #include "engine/generator/state_identity.h"
@@ -328,6 +329,11 @@ class Builder {
   // Renumbers the states after the unions of find_state: one state per class (the lowest
   // id's witness), links and candidates redirected, duplicate links dropped.
   void merge_united_states();
+  // States of one CF and region signature that no join proved one while the graph grew, joined
+  // now by paths in the contact's parameters (cf_parameter_path.h): united when one is found.
+  // At the end, so that each duplicate's own transitions are in the graph before its links
+  // are re-pointed by merge_united_states.
+  void join_duplicate_states();
   int add_state(const ContactFormation& cf, const Pose& pose,
                 const std::vector<PointContact>& contacts, bool seed, int depth);
   void grow(int seed_id);
@@ -568,6 +574,26 @@ void Builder::grow(int seed_id) {
     }
     frontier = std::move(next_frontier);
     ++level;
+  }
+}
+
+void Builder::join_duplicate_states() {
+  const int n = static_cast<int>(graph_.states.size());
+  for (int i = 0; i < n && !cancelled(); ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const State &si = graph_.states[i], &sj = graph_.states[j];
+      if (!(si.cf == sj.cf) || signatures_[i] != signatures_[j] ||
+          representative(i) == representative(j))
+        continue;
+      bool joined = false;
+      for (size_t u = 0; u < members_[i].size() && !joined; ++u)
+        for (size_t v = 0; v < members_[j].size() && !joined; ++v)
+          joined = joined_by_parameter_path(scene_, members_[i][u].pose, members_[j][v].pose,
+                                            si.cf, counters_, symmetry_);
+      if (!joined) continue;
+      const int r1 = representative(i), r2 = representative(j);
+      united_[std::max(r1, r2)] = std::min(r1, r2);
+    }
   }
 }
 
@@ -844,6 +870,7 @@ StateGraph Builder::run() {
   }
 
   if (!cancelled()) retry_missing_links();
+  if (!cancelled()) join_duplicate_states();
   merge_united_states();
 
   graph_.stats.seconds =

@@ -68,19 +68,21 @@ TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
   expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
 }
 
-// The lens (Example 2's A) has fA1 - eA - fA2; B has f1 - e1 - f2 - e2 - f3. From a single
-// contact the LN graph (without upward probes) holds single contacts only: every pair of an A element and a B element
-// (each can touch each: A is convex, and turning it over exchanges fA1 and fA2), adjacent when
-// one of the two elements changes to an adjacent one: a 3 x 5 grid of 15 CFs, 22 pairs. The
-// rims crossing, {(eA-e1, 1)} and {(eA-e2, 1)}, are two regions each (rim_crossing_sign):
-// 17 states.
+// The lens (Example 2's A) has fA1 - eA - fA2; B has f1 - e1 - f2 - e2 - f3. Its single
+// contacts: every pair of an A element and a B element (each can touch each: A is convex, and
+// turning it over exchanges fA1 and fA2), adjacent when one of the two elements changes to an
+// adjacent one: a 3 x 5 grid of 15 CFs, 22 pairs. The rims crossing, {(eA-e1, 1)} and
+// {(eA-e2, 1)}, are two regions each (rim_crossing_sign): 17 single-contact states. Without
+// upward probes the graph also holds states of higher cardinality: a transition motion that
+// meets a new touching contact has reached one from below, and it is grown like a seed
+// (generator.cc, discoveries), so the single contacts are checked, not the whole graph.
 TEST(StressShapes, LensTipOnTheDishTip) {
-  GTEST_SKIP() << "generator defects on Example 2's lens (engine/generator): with the "
-                  "upward probes off, the graph from this seed has 28 states: all 15 "
-                  "single-contact CFs, but also 7 two-contact CFs (card above the seed's: not "
-                  "in its LN graph), {(eA-e1, 1)} three times (crossing signs -1, -1, +1: one "
-                  "region found twice), {(eA-e2, 1)} once (the + region missing), and "
-                  "{(eA-f1, 1)}, {(fA1-e1, 1)}, {(fA2-e1, 1)} twice each (one region each).";
+  GTEST_SKIP() << "generator defect (engine/generator), measured: with the upward probes off "
+                  "the graph has 32 states; its single-contact states are exactly the 17 "
+                  "expected (every duplicate joined, both crossing regions of eA-e1 and eA-e2), "
+                  "witnesses valid, but the link {(eA-f1, 1)} -- {(fA2-f1, 1)} is missing "
+                  "(21 of the 22 pairs), and {(eA-f1, 1), (fA2-e1, 1)} is held twice (no join, "
+                  "cf_parameter_path.h included, connects its two witnesses).";
   const SceneSpec spec = load_scene_file(stress_path("lens_tip_in_dish.yaml"));
   const std::vector<std::string> a = {"fA1", "eA", "fA2"}, b = {"f1", "e1", "f2", "e2", "f3"};
   auto cf = [&](size_t i, size_t j) { return "{(" + a[i] + "-" + b[j] + ", 1)}"; };
@@ -95,7 +97,21 @@ TEST(StressShapes, LensTipOnTheDishTip) {
   states.insert(states.end(), {"{(eA-e1, 1)}", "{(eA-e2, 1)}"});
   const Generated g = generate(spec, /*probe_upward=*/false);
   ASSERT_EQ(g.graph.states.at(0).cf.str(g.scene), "{(fA1-f1, 1)}");
-  expect_graph(g, states, adj);
+  std::vector<std::string> singles;
+  for (const State& s : g.graph.states)
+    if (s.cf.cardinality() == 1) singles.push_back(s.cf.str(g.scene));
+  EXPECT_EQ(testing::sorted(singles), testing::sorted(states))
+      << "got single-contact states:\n" << testing::join(testing::sorted(singles));
+  std::vector<std::string> single_adj;
+  for (const Link& l : g.graph.links) {
+    const State &from = g.graph.states[l.from], &to = g.graph.states[l.to];
+    if (from.cf.cardinality() == 1 && to.cf.cardinality() == 1)
+      single_adj.push_back(adjacent_pair(from.cf.str(g.scene), to.cf.str(g.scene)));
+  }
+  single_adj = testing::sorted(single_adj);
+  single_adj.erase(std::unique(single_adj.begin(), single_adj.end()), single_adj.end());
+  EXPECT_EQ(single_adj, testing::sorted(adj)) << "got adjacency:\n" << testing::join(single_adj);
+  testing::expect_witnesses_valid(g);
   testing::expect_both_crossing_regions(g, "eA-e1");
   testing::expect_both_crossing_regions(g, "eA-e2");
 }
@@ -180,7 +196,10 @@ TEST(StressShapes, NeedleInTheDish) {
   GTEST_SKIP() << "generator defect (state identity, engine/generator), measured: the graph "
                   "from automatic seeds has 8 states and 20 links: every single-contact CF "
                   "once, {(fA-f1, 2)}, and {(fA-e1, 1), (fA-f1, 1)} twice (two witnesses no "
-                  "joining motion connects), but no {(fA-e1, 2)} (the needle across the rim). "
+                  "joining motion connects, the path in the contact's parameters "
+                  "(cf_parameter_path.h) included: its pieces fail with the rim contact "
+                  "leaving e1 or fA penetrating f2; one witness has the rim contact on the "
+                  "needle's very tip), but no {(fA-e1, 2)} (the needle across the rim). "
                   "Before the tips were meshed (mesh_extremes.h) and their contacts solved "
                   "from the support point (contact_detection.cc), 6 states: detection saw no "
                   "contact at touching tips, only penetrations.";
