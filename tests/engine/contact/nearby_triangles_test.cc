@@ -14,15 +14,8 @@
 namespace pcsg {
 namespace {
 
-using K = testkit::BowlConstants;
-
-// The closed-form resting height of the lying ellipsoid (bowl_contacts_test.cc).
-Pose resting_pose() {
-  Pose X;
-  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
-  X.position = {0, 0, 6.25 * K::a + 1 / (25 * K::a) - K::b};
-  return X;
-}
+// The ellipsoid lying in the dish (paper Fig. 5b): two f-f contacts.
+Pose resting_pose() { return testkit::lying_ellipsoid_pose(); }
 
 SceneGeometry bowl_scene() {
   return testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid(1));

@@ -9,15 +9,8 @@
 namespace pcsg {
 namespace {
 
-using K = testkit::BowlConstants;
-
 // The ellipsoid lying in the dish (paper Fig. 5b): two f-f contacts.
-Pose resting_pose() {
-  Pose X;
-  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
-  X.position = {0, 0, 6.25 * K::a + 1 / (25 * K::a) - K::b};
-  return X;
-}
+Pose resting_pose() { return testkit::lying_ellipsoid_pose(); }
 
 void expect_same_report(const ContactReport& x, const ContactReport& y) {
   ASSERT_EQ(x.contacts.size(), y.contacts.size());

@@ -59,6 +59,16 @@ struct BowlConstants {
   static double rim_z() { return 0.5 * (-1 / a + std::sqrt(1 / (a * a) - 4 * (b / a - 16))); }
 };
 
+// The ellipsoid (1, 1.5, 2.5) lying in the dish (paper Fig. 5b), resting on its two f-f
+// contacts: the closed-form height of bowl_contacts_test.cc.
+inline Pose lying_ellipsoid_pose() {
+  using K = BowlConstants;
+  Pose X;
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+  X.position = {0, 0, 6.25 * K::a + 1 / (25 * K::a) - K::b};
+  return X;
+}
+
 inline MeshedSolid bowl_solid(double s = 1) {
   using K = BowlConstants;
   const Polynomial x = var(0) * (1 / s), y = var(1) * (1 / s), z = var(2) * (1 / s);
