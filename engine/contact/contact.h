@@ -94,6 +94,9 @@ struct DetectOptions {
   // When the pose lies within `nearby`'s margin, its overlapping triangle pairs are taken from
   // these (same result, far cheaper than a BVH query); otherwise the BVHs are queried.
   const NearbyTriangles* nearby = nullptr;
+  // Whether a repeated query may be answered from the context's recent reports (benchmarks
+  // that time detection itself turn this off).
+  bool recall = true;
 };
 
 // All isolated contacts at the pose, each classified by the elements whose relative interiors

@@ -548,6 +548,7 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
   if (options.near_margin > ctx.guaranteed_band())
     throw std::invalid_argument("detect_contacts: near_margin exceeds the context's band");
   // a repeated query (the pose bit for bit, the same margin) gets the report it got before
+  if (!options.recall) return detect_anew(ctx, X_BA, options);
   const ReportCache::Key key = ReportCache::key(X_BA, options.near_margin);
   if (std::optional<ContactReport> known = ctx.recent_reports().recall(key)) {
     known->recalled = true;

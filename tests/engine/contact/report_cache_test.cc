@@ -56,6 +56,12 @@ TEST(ReportCache, AnotherPoseOrMarginIsQueriedAnew) {
   Pose Y = X;
   Y.position.z() = std::nextafter(Y.position.z(), INFINITY);
   EXPECT_FALSE(detect_contacts(ctx, Y).recalled);
+  // asked not to recall (`pcsg bench` times detection itself): detected again, same report
+  DetectOptions fresh;
+  fresh.recall = false;
+  const ContactReport again = detect_contacts(ctx, Y, fresh);
+  EXPECT_FALSE(again.recalled);
+  expect_same_report(again, detect_contacts(ctx, Y));
 }
 
 TEST(ReportCache, KeepsAtMostItsCapacityDroppingTheOldest) {
