@@ -23,9 +23,8 @@ struct ContactRates {
 // whether the solution still lies in the elements' interiors: during a motion the contact's
 // classification is the detector's call (transition_motion.cc), so that a contact can be
 // followed exactly up to and across an element boundary.
-std::optional<PointContact> track_pair(const SceneGeometry& scene, const Pose& X,
-                                       ElementId a, ElementId b, PtcType type,
-                                       const Eigen::Vector3d& start_A,
+std::optional<PointContact> track_pair(const SceneGeometry& scene, const Pose& X, ElementId a,
+                                       ElementId b, PtcType type, const Eigen::Vector3d& start_A,
                                        const Eigen::Vector3d& start_B);
 
 std::optional<ContactRates> contact_rates(const SceneGeometry& scene, const Pose& X,
@@ -37,8 +36,8 @@ Eigen::Vector3d normal_in_A(const Pose& X, const PointContact& c);
 
 // Rows and targets accumulated for one step.
 struct DriveSystem {
-  std::vector<Eigen::Matrix<double, 1, 6>> hard;        // rows that must stay zero
-  std::vector<Eigen::Matrix<double, 1, 6>> drive;       // rows driven toward `target`
+  std::vector<Eigen::Matrix<double, 1, 6>> hard;   // rows that must stay zero
+  std::vector<Eigen::Matrix<double, 1, 6>> drive;  // rows driven toward `target`
   std::vector<double> target;
   void add_hard(const Eigen::MatrixXd& rows);
   void add_drive(const Eigen::MatrixXd& rows, const Eigen::VectorXd& t, double weight);
@@ -62,8 +61,7 @@ std::optional<Eigen::Vector3d> nearest_point_on_edge(const Solid& S, int edge,
 // (exact for an edge, nearest_point_on_edge).
 std::optional<Eigen::Vector3d> direction_toward(const Solid& S, ElementId el,
                                                 const Eigen::Vector3d& x,
-                                                const Eigen::Vector3d& n_S,
-                                                const Tolerances& tol);
+                                                const Eigen::Vector3d& n_S, const Tolerances& tol);
 // The middle of the outward normal cone of an edge or vertex at x (normalised sum of the
 // normals of the surfaces through it); the face normal for a face.
 Eigen::Vector3d cone_middle(const Solid& S, ElementId el, const Eigen::Vector3d& x);

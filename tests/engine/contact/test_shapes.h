@@ -40,9 +40,8 @@ inline MeshedSolid lens_solid(double rho, double h) {
 inline MeshedSolid double_paraboloid_solid(double s = 1) {
   const Polynomial r2 = (var(0) * (1 / s)).pow(2) + (var(1) * (1 / s)).pow(2);
   const Polynomial z = var(2) * (1 / s);
-  MeshedSolid m{make_solid("D", {{"fA1", r2 * 8 - z * 9 - cst(18)},
-                                 {"fA2", r2 * 8 + z * 9 - cst(18)}}),
-                {}};
+  MeshedSolid m{
+      make_solid("D", {{"fA1", r2 * 8 - z * 9 - cst(18)}, {"fA2", r2 * 8 + z * 9 - cst(18)}}), {}};
   add_edge(m.solid, "eA", 0, 1, circle(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 1.5 * s),
            true);
   m.mesh = mesh_convex(m.solid, Eigen::Vector3d::Zero());
@@ -53,7 +52,7 @@ inline MeshedSolid double_paraboloid_solid(double s = 1) {
 // f2 the sphere band x^2 + y^2 + z^2 <= 16, f3 the convex bottom x^2 + y^2 - 4z <= 16; e1 is
 // the dish's rim on the sphere, e2 the circle z = 0, r = 4.
 struct BowlConstants {
-  static constexpr double a = 4 / 10.07047;         // dish: z = a r^2 - b
+  static constexpr double a = 4 / 10.07047;  // dish: z = a r^2 - b
   static constexpr double b = 15.75982 / 10.07047;
   // Rim: a r^2 - b = z and r^2 + z^2 = 16  =>  z^2 + z / a + b / a - 16 = 0.
   static double rim_z() { return 0.5 * (-1 / a + std::sqrt(1 / (a * a) - 4 * (b / a - 16))); }
@@ -108,9 +107,9 @@ inline MeshedSolid three_ball_solid(double rho, double d) {
   Eigen::Vector3d c[3];
   for (int k = 0; k < 3; ++k)
     c[k] = d * Eigen::Vector3d(std::cos(2 * M_PI * k / 3), std::sin(2 * M_PI * k / 3), 0);
-  MeshedSolid m{make_solid("T", {{"f0", ball(c[0], rho)}, {"f1", ball(c[1], rho)},
-                                 {"f2", ball(c[2], rho)}}),
-                {}};
+  MeshedSolid m{
+      make_solid("T", {{"f0", ball(c[0], rho)}, {"f1", ball(c[1], rho)}, {"f2", ball(c[2], rho)}}),
+      {}};
   const double h = std::sqrt(rho * rho - d * d);
   const int pairs[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   const char* names[3] = {"e01", "e12", "e20"};
