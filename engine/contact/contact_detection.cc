@@ -7,6 +7,7 @@
 
 #include "engine/contact/contact_classification.h"
 #include "engine/contact/contact_context.h"
+#include "engine/contact/element_geometry.h"
 #include "engine/contact/surface_descent.h"
 #include "engine/geometry/surface.h"
 
@@ -178,32 +179,48 @@ bool may_bifurcate(const Candidate& c) {
          (fb && c.a.kind == ElementKind::Edge);
 }
 
-// A starting pair of a candidate besides its closest: the far end of its part of the
-// overlap region. One region can hold two local minima of one element pair: next to a
-// bifurcation where two contacts merge (surfaces of nearly matching curvature,
+// More starting pairs of a candidate, in the same overlap region: one region of the inflated
+// meshes' overlap can hold several local minima of one element pair, and the Newton solve
+// from its closest triangle pair reaches one of them, or a saddle between them, or none.
+// (1) Apart: where the gap between two contacts of one pair stays within the meshes' reach,
+// their overlap rings join into one region: Example 1's ellipsoid lying across the dish's rim
+// ({(fA-e1, 2)}, contacts 3.3 apart) or along the dish ({(fA-f1, 2)}, sometimes no contact
+// found at all: the first solve ended at a saddle). Measured on Example 1's generation: at 328
+// poses where a motion kept such a state, detection missed one contact that the pair solve
+// from its tracked points found to be a minimum with gap below 1e-11 L, so the motion saw a
+// kept contact vanish; with the starts below, none. Two minima of one pair lie at least
+// Tolerances::seed_separation apart, so while a witness of the candidate lies farther than
+// that from every start solved from and every minimum found, it is solved from too (the
+// farthest first), after a minimum, a saddle or a failed solve alike.
+// (2) Next to a bifurcation where two contacts merge (surfaces of nearly matching curvature,
 // scenes/stress/near_matching_curvature.yaml) they lie 0.8% of L apart with a saddle
-// 3.8e-8 L above them, far below what the meshes resolve, and the solve from the closest
-// triangle pair reaches only one of them. Two minima about to merge are flat along the line
-// joining them, so when the first solve found a minimum (at found_B) whose relative
-// curvature is below Tolerances::bifurcation_curvature, the pair farthest from it is solved
-// from too: the other minimum, if any, lies beyond the first one from there. (A first solve
-// that lands on the saddle between them still finds neither; extra solves after saddles
-// changed Example 1's graph, see the tolerance.) Pairs are placed at the midpoints of their
-// triangles' centroids, so that the choice does not depend on which object is A (the
-// metamorphic swap tests). Solutions are deduplicated by Tolerances::distinct_points.
-int far_end(const Eigen::Vector3d& found_B, const std::vector<int>& witnesses,
-            const std::vector<Eigen::Vector3d>& midpoints) {
+// 3.8e-8 L above them, far below what the meshes resolve. Two minima about to merge are flat
+// along the line joining them, so when the first minimum's relative curvature is below
+// Tolerances::bifurcation_curvature, the witness farthest from it is solved from whatever its
+// distance: the other minimum, if any, lies beyond the first one from there.
+// Pairs are placed at the midpoints of their triangles' centroids, so that the choice does not
+// depend on which object is A (the metamorphic swap tests). Solutions are deduplicated by
+// Tolerances::distinct_points.
+// The witness farthest from every point of `centres`, and that distance (-1: no witness).
+std::pair<int, double> farthest_witness(const std::vector<Eigen::Vector3d>& centres,
+                                        const std::vector<int>& witnesses,
+                                        const std::vector<Eigen::Vector3d>& midpoints) {
   int best = -1;
   double bd = -1;
   for (int p : witnesses) {
-    const double d = (midpoints[p] - found_B).squaredNorm();
+    double d = INFINITY;
+    for (const Eigen::Vector3d& c : centres) d = std::min(d, (midpoints[p] - c).squaredNorm());
     if (d > bd) {
       bd = d;
       best = p;
     }
   }
-  return best;
+  return {best, best < 0 ? -1.0 : std::sqrt(bd)};
 }
+
+// Solves per candidate and region beyond the first: regions seen hold at most two minima of
+// one pair; the cap bounds the cost of a region whose witnesses form a long band.
+constexpr int kMaxExtraSolves = 4;
 
 bool same_contact(const PointContact& x, const PointContact& y, double distinct) {
   return x.a == y.a && x.b == y.b && x.type == y.type &&
@@ -215,22 +232,56 @@ int dimension(ElementId id) {
   return id.kind == ElementKind::Face ? 2 : id.kind == ElementKind::Edge ? 1 : 0;
 }
 
-// One point found through two element pairs: a contact at an edge point solved as f-f from
-// one start (its point on the face's boundary, within Tolerances::on_boundary) and as f-e
-// from another. The paper names a contact by the elements whose relative interiors hold its
-// point: the pair of lower dimension. Seen in Example 1 with B moved 1e4 L away: fA-f2 and
-// fA-e2 at one point (gaps -3.7e-12 and -7.6e-13), a state {(fA-e2, 1), (fA-f2, 1)} that no
-// convex A can reach.
-void drop_boundary_duplicates(std::vector<PointContact>& minima, double distinct) {
+// Do the points a and b (in `solid`'s frame) and the segment between them lie on every surface
+// that both elements lie on, to `gap` at its midpoint? False when the elements share none.
+bool segment_on_common_surfaces(const Solid& solid, ElementId x, ElementId y,
+                                const Eigen::Vector3d& a, const Eigen::Vector3d& b, double gap) {
+  const SurfaceSet sx = element_surfaces(solid, x), sy = element_surfaces(solid, y);
+  const Eigen::Vector3d m = 0.5 * (a + b);
+  bool common = false;
+  for (int k = 0; k < sx.size; ++k) {
+    if (!sy.contains(sx.index[k])) continue;
+    common = true;
+    if (std::abs(surface_distance(solid.surfaces[sx.index[k]], m)) > gap) return false;
+  }
+  return common;
+}
+
+// One contact found through two element pairs, the pair of lower dimension kept: the paper
+// names a contact by the elements whose relative interiors hold its point.
+// (a) One point: a contact at an edge point solved as f-f from one start (its point on the
+// face's boundary, within Tolerances::on_boundary) and as f-e from another. Seen in Example 1
+// with B moved 1e4 L away: fA-f2 and fA-e2 at one point (gaps -3.7e-12 and -7.6e-13), a state
+// {(fA-e2, 1), (fA-f2, 1)} that no convex A can reach.
+// (b) Two points on one contact at the gap tolerance: A touching B's face 1e-5 L from its
+// edge, where the edge's own distance minimum lies within contact_gap too (the surfaces part
+// by ~ curvature x distance^2, 1e-11 L here). Both pairs' minima are contacts, 1.3e-4 L
+// apart: seen in Example 1 with A and B swapped as a state {(fA-e1, 2), (fA-f1, 1)} whose
+// f-f and f-e contacts were one. They are one contact when the segment between them lies on
+// the surfaces both pairs' elements share, to contact_gap at its midpoint, on A and on B; two
+// separate contacts (0.05 L apart, the surfaces parting by 1e-4 L between them) are kept.
+// (c) One pair's minimum found twice along such a segment, from two starts of one region
+// (contact_detection's further starts): the first found is kept. Seen with the two lenses'
+// nearly collinear rims (scenes/stress/collinear_edges.yaml, A and B swapped) as a state
+// {(eA-eB, 2)}, which two convex solids cannot have.
+void drop_boundary_duplicates(const SceneGeometry& scene, std::vector<PointContact>& minima) {
+  const Tolerances& tol = scene.tol;
   std::vector<bool> drop(minima.size(), false);
   for (size_t i = 0; i < minima.size(); ++i)
     for (size_t j = 0; j < minima.size(); ++j) {
       const PointContact &x = minima[i], &y = minima[j];
-      if (i == j || drop[j] || (x.a == y.a && x.b == y.b)) continue;
-      if ((x.p_A - y.p_A).norm() > distinct || (x.p_B - y.p_B).norm() > distinct) continue;
-      // x is dropped for y when y's pair has lower dimension (ties are kept: not this case)
+      const bool same_pair = x.a == y.a && x.b == y.b;
+      if (i == j || drop[j] || (same_pair && j > i)) continue;
+      const bool one_point = (x.p_A - y.p_A).norm() <= tol.distinct_points &&
+                             (x.p_B - y.p_B).norm() <= tol.distinct_points;
+      if (!one_point &&
+          !(segment_on_common_surfaces(scene.A, x.a, y.a, x.p_A, y.p_A, tol.contact_gap) &&
+            segment_on_common_surfaces(scene.B, x.b, y.b, x.p_B, y.p_B, tol.contact_gap)))
+        continue;
+      // x is dropped for y when y's pair has lower dimension, or is x's pair found first
+      // (other ties are kept: not this case)
       const int dx = dimension(x.a) + dimension(x.b), dy = dimension(y.a) + dimension(y.b);
-      if (dy < dx) {
+      if (dy < dx || same_pair) {
         drop[i] = true;
         break;
       }
@@ -495,11 +546,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
       if ((found == Found::Failed || found == Found::Saddle) && c.a.kind == ElementKind::Face &&
           c.b.kind == ElementKind::Face)
         unsettled[r].push_back(&c);
-      // a second minimum of the pair in this region only next to a bifurcation, where the
-      // first is nearly flat (far_end)
-      if (found != Found::Minimum || !may_bifurcate(c) ||
-          sliding_curvature(scene, X_BA, first) > tol.bifurcation_curvature)
-        continue;
+      if (found == Found::Penetration || found == Found::Nothing || !may_bifurcate(c)) continue;
       if (midpoints.empty()) {
         midpoints.resize(pairs.size());
         for (size_t i = 0; i < pairs.size(); ++i)
@@ -511,8 +558,22 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
       for (size_t i = 0; i < pairs.size(); ++i)
         if (regions.region_of[i] == static_cast<int>(r) && witnesses_pair(ctx, pairs[i], c))
           witnesses.push_back(static_cast<int>(i));
-      const int end = far_end(first.point_B, witnesses, midpoints);
-      if (end >= 0 && end != c.pair) solve_from(r, c, end, nullptr);
+      // more starts (farthest_witness): next to a bifurcation at any distance, else beyond the
+      // separation of two minima
+      std::vector<Eigen::Vector3d> centres = {midpoints[c.pair]};
+      if (found == Found::Minimum) centres.push_back(first.point_B);
+      double spread = found == Found::Minimum &&
+                              sliding_curvature(scene, X_BA, first) <= tol.bifurcation_curvature
+                          ? 0.0
+                          : tol.seed_separation;
+      for (int k = 0; k < kMaxExtraSolves; ++k) {
+        const auto [end, distance] = farthest_witness(centres, witnesses, midpoints);
+        if (end < 0 || end == c.pair || distance <= spread) break;
+        centres.push_back(midpoints[end]);
+        PointContact more;
+        if (solve_from(r, c, end, &more) == Found::Minimum) centres.push_back(more.point_B);
+        spread = tol.seed_separation;
+      }
     }
   // Face pairs whose solve failed or ended at a saddle, in a region where no penetration was
   // found: neither may read as "apart" where the faces interpenetrate (deepest_face_points).
@@ -526,7 +587,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
     }
   add_unsolved_penetrations(scene, X_BA, pairs, regions, penetrates, report);
 
-  drop_boundary_duplicates(minima, tol.distinct_points);
+  drop_boundary_duplicates(scene, minima);
   for (PointContact& c : minima) {
     if (std::abs(c.gap) <= tol.contact_gap)
       report.contacts.push_back(std::move(c));

@@ -84,16 +84,17 @@ struct Tolerances {
   // saddle 3.8e-8 L high (scenes/stress/near_matching_curvature.yaml) have 0.021 / L; 0.1 / L
   // keeps margin, while most contacts are far more curved (the extra solves cost time).
   // Measured: Example 1 generated and swapped, 52.4 s of CPU without the extra solves,
-  // 55.0 s with them. (Solving again after every saddle too cost ~1.5x and added a duplicate
-  // region of {(fA-e1, 1), (fA-f1, 1)} to Example 1's graph.)
+  // 55.0 s with them. (Detection also solves again, after minima, saddles and failed solves,
+  // from witnesses farther than seed_separation from every start: contact_detection.cc.)
   double bifurcation_curvature = 0.1;
   // Projection onto a contact formation: largest translation (and rotation times L) of one
   // Gauss-Newton step, 0.05 L, inside the basin of the pair solves; and an iteration cap
   // (quadratic convergence needs < 10 from a motion step away).
   double projection_step = 5e-2;
   int projection_max_iterations = 60;
-  // Starting points of one element pair's solves closer than this are one (projection seeds):
-  // two separate distance minima of a pair lie a curvature radius apart, >= 0.1 L here.
+  // Starting points of one element pair's solves closer than this are one (projection seeds,
+  // and detection's further starts in one overlap region): two separate distance minima of a
+  // pair lie a curvature radius apart, >= 0.1 L here.
   double seed_separation = 5e-2;
   // A surface holds a straight segment when g(p + t d), t in units of L, has all its t-terms
   // below this times |grad g| L + |Hess g| L^2 (dimensionless): it then departs from the line

@@ -192,5 +192,69 @@ TEST(ExampleScenes, TorusRingAroundTheConvexBottomIsAPenetration) {
   EXPECT_TRUE(rep.penetrating()) << ContactFormation::of(rep.contacts).str(g);
 }
 
+// Poses where the ellipsoid touches one element of the dish twice, the two contacts joined
+// into one overlap region of the inflated meshes (contact_detection.cc): met by Example 1's
+// motions, where detection used to report one of the two, or none (the first solve ending at
+// a saddle); and a state of three contacts, two of them 0.27 apart on the wall and on the rim
+// (the surfaces part by 2.3e-3 between them, so they are two contacts), met by Example 1 with
+// A and B swapped. Each contact is first established on its own, by the exact pair solve from
+// a start rounded to 0.01 (about 1e-3 L away); then detection must report exactly those.
+TEST(ExampleScenes, SeveralContactsOfOnePairInOneOverlapRegionAreAllFound) {
+  const SceneGeometry& scene = example1();
+  const ElementId fA{ElementKind::Face, 0}, f1{ElementKind::Face, 0}, e1{ElementKind::Edge, 0};
+  struct Touch {
+    ElementId b;
+    Eigen::Vector3d near;  // the contact point rounded (B's frame)
+  };
+  struct Case {
+    Eigen::Vector3d position;
+    Eigen::Quaterniond quaternion;
+    std::vector<Touch> touches;
+  };
+  const std::vector<Case> cases = {
+      {{0.9553306853586937, 0.79844698087712074, 0.71398339375474085},
+       {0.90863729279763561, -0.086706563885101937, 0.23985579158273646, 0.33065002821841954},
+       {{f1, {0.55, 0.35, -1.40}}, {f1, {1.52, 1.03, -0.23}}}},
+      {{0.88614042797131354, 0.27363916201499644, 0.56547669346951368},
+       {0.88015613967005812, -0.040349187611396692, 0.35516413222231485, 0.31233884171356513},
+       {{f1, {-0.29, -0.69, -1.34}}, {f1, {2.40, 0.11, 0.73}}}},
+      {{0.58022694086582094, 0.87933833225804969, 0.61878887421873552},
+       {0.88025530677840957, -0.11801803714046794, 0.32840056073425045, 0.32152046514551652},
+       {{f1, {-0.84, 0.58, -1.15}}, {f1, {1.14, 2.22, 0.90}}}},
+      {{-2.0893670071658796, 0.25142817123889899, 2.8923756367779272},
+       {0.43391984130239603, -0.28823260707024251, 0.71530339881295335, 0.46580745291615039},
+       {{e1, {-3.11, -0.65, 2.44}}, {e1, {-2.39, 2.09, 2.44}}}},
+      {{-1.6448574261318925, -1.3752918395637339, 2.7739443510763029},
+       {0.67566755213273266, 0.52826320132952898, -0.15647949045581666, 0.48982192497143967},
+       {{f1, {-3.09, -0.58, 2.36}}, {e1, {-3.06, -0.83, 2.44}}, {e1, {-1.96, -2.50, 2.44}}}},
+  };
+  for (const Case& k : cases) {
+    Pose X;
+    X.position = k.position;
+    X.quaternion = k.quaternion;
+    std::vector<PointContact> truth;
+    for (const Touch& t : k.touches) {
+      const ResolvedContact r = resolve_contact(scene, X, fA, t.b, X.apply_inverse(t.near), t.near);
+      ASSERT_TRUE(r.found && r.minimum) << r.reason;
+      EXPECT_LE(std::abs(r.contact.gap), scene.tol.contact_gap);
+      EXPECT_TRUE(r.contact.a == fA && r.contact.b == t.b);
+      truth.push_back(r.contact);
+    }
+    DetectOptions fresh;
+    fresh.recall = false;
+    const ContactReport rep = detect_contacts(scene, X, fresh);
+    EXPECT_FALSE(rep.penetrating());
+    ASSERT_EQ(rep.contacts.size(), truth.size()) << ContactFormation::of(rep.contacts).str(scene);
+    for (const PointContact& t : truth) {
+      bool seen = false;
+      for (const PointContact& c : rep.contacts)
+        seen = seen || (c.a == t.a && c.b == t.b &&
+                        (c.point_B - t.point_B).norm() <= scene.tol.distinct_points);
+      EXPECT_TRUE(seen) << "missing " << element_pair_name(scene, t.a, t.b) << " at "
+                        << t.point_B.transpose();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pcsg
