@@ -253,9 +253,9 @@ bool segment_on_common_surfaces(const Solid& solid, ElementId x, ElementId y,
 // face's boundary, within Tolerances::on_boundary) and as f-e from another. Seen in Example 1
 // with B moved 1e4 L away: fA-f2 and fA-e2 at one point (gaps -3.7e-12 and -7.6e-13), a state
 // {(fA-e2, 1), (fA-f2, 1)} that no convex A can reach.
-// (b) Two points on one contact at the gap tolerance: A touching B's face 1e-5 L from its
+// (b) Two points on one contact at the gap tolerance: A touching B's face 1.3e-6 L from its
 // edge, where the edge's own distance minimum lies within contact_gap too (the surfaces part
-// by ~ curvature x distance^2, 1e-11 L here). Both pairs' minima are contacts, 1.3e-4 L
+// by ~ curvature x distance^2, 1e-12 L here). Both pairs' minima are contacts, 1.3e-6 L
 // apart: seen in Example 1 with A and B swapped as a state {(fA-e1, 2), (fA-f1, 1)} whose
 // f-f and f-e contacts were one. They are one contact when the segment between them lies on
 // the surfaces both pairs' elements share, to contact_gap at its midpoint, on A and on B; two
