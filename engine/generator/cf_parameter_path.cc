@@ -22,6 +22,12 @@ constexpr double kMaxPieceShiftSizes = 0.25;
 // from it; the walk proper starts at a crossing angle at least kSafeCrossing from it.
 constexpr double kTouchGrowth = 1.5;
 constexpr double kSafeCrossing = M_PI / 6;
+// An edge's normal on the walk stays kOffBoundary of its cone's angle inside the cone at the
+// walk's ends (a normal on the boundary is as much the neighbouring face's: the waypoints
+// there were detected as that face's contact, Example 2's lens rim on the dish rim) and
+// kSafeCone inside it midway (the cone's counterpart of kSafeCrossing).
+constexpr double kOffBoundary = 1e-2;
+constexpr double kSafeCone = 1.0 / 6;
 // More pieces than this: the path is too long to be worth its motions.
 constexpr int kMaxPieces = 48;
 // Newton iterations that put a point back on its element's surfaces after a piece.
@@ -143,16 +149,25 @@ SidePath side_path(const Solid& S, ElementId el, const Eigen::Vector3d& p0,
     const double s0 = arc_length(e, p0);
     double ds = arc_length(e, p1) - s0;
     if (e.closed) ds -= e.length * std::round(ds / e.length);  // the shorter way round
-    const double f0 = cone_fraction(edge_cone(S, el.index, p0), m0);
-    const double f1 = cone_fraction(edge_cone(S, el.index, p1), m1);
+    // The normal's place in the cone: kOffBoundary inside it at both ends (index 0 and n
+    // too: a witness whose normal lies on the cone's boundary, where a transition from a face
+    // contact left it, is reached from there by a motion) and up to kSafeCone inside it
+    // midway.
+    auto inside = [](double f) { return std::clamp(f, kOffBoundary, 1 - kOffBoundary); };
+    const double f0 = inside(cone_fraction(edge_cone(S, el.index, p0), m0));
+    const double f1 = inside(cone_fraction(edge_cone(S, el.index, p1), m1));
+    auto fraction = [&](double t) {
+      const double margin = kSafeCone * std::sin(M_PI * t);
+      return std::clamp((1 - t) * f0 + t * f1, margin, 1 - margin);
+    };
+    const EdgeCone c0 = edge_cone(S, el.index, p0);
+    path.normal[0] = Eigen::AngleAxisd(f0 * c0.angle, c0.axis) * c0.n1;
+    path.ref[0] = tangent_part(edge_jet(S, el.index, p0).tangent, path.normal[0]);
     for (int k = 1; k <= n; ++k) {
       const double t = static_cast<double>(k) / n;
       const Eigen::Vector3d p = k == n ? p1 : edge_point(S, el.index, s0 + t * ds, residual);
       const EdgeCone c = edge_cone(S, el.index, p);
-      const Eigen::Vector3d m =
-          k == n ? m1
-                 : Eigen::Vector3d(Eigen::AngleAxisd(((1 - t) * f0 + t * f1) * c.angle, c.axis) *
-                                   c.n1);
+      const Eigen::Vector3d m = Eigen::AngleAxisd(fraction(t) * c.angle, c.axis) * c.n1;
       path.point.push_back(p);
       path.normal.push_back(m);
       path.ref.push_back(tangent_part(edge_jet(S, el.index, p).tangent, m));

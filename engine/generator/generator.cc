@@ -350,6 +350,10 @@ class Builder {
   RegionSignatures missing_signatures(const std::vector<PointContact>& contacts,
                                       const Hypothesis& h) const;
   void add_link(int from, int to, const std::string& motion);
+  // The states that the solids' relabelling half turns imply (symmetry.h): each state's
+  // witness turned so, one configuration under the other labelling, re-detected exactly. Each
+  // whose CF and region signature no state has is added and grown. Returns whether any was.
+  bool add_relabelled_states();
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
   std::vector<Eigen::Vector3d> probe_goals(const State& s) const;
@@ -595,6 +599,35 @@ void Builder::join_duplicate_states() {
       united_[std::max(r1, r2)] = std::min(r1, r2);
     }
   }
+}
+
+bool Builder::add_relabelled_states() {
+  if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return false;
+  bool added = false;
+  const int n = static_cast<int>(graph_.states.size());
+  for (int id = 0; id < n && !cancelled(); ++id) {
+    std::vector<Pose> images;
+    for (const SymmetryAxis& h : symmetry_.relabelling_A)
+      images.push_back(turned_about_A(graph_.states[id].pose, h, M_PI));
+    for (const SymmetryAxis& h : symmetry_.relabelling_B)
+      images.push_back(turned_about_B(graph_.states[id].pose, h, M_PI));
+    for (const Pose& Y : images) {
+      ++counters_.detections;
+      const ContactReport rep = detect_contacts(scene_, Y);
+      // The same configuration: it touches as the state does (a failed re-detection is left
+      // out rather than trusted).
+      if (rep.penetrating() || rep.contacts.size() != graph_.states[id].contacts.size()) continue;
+      const ContactFormation cf = ContactFormation::of(rep.contacts);
+      const RegionSignature sig = region_signature(rep.contacts);
+      bool known = false;
+      for (const State& s : graph_.states)
+        known = known || (s.cf == cf && signatures_[s.id] == sig);
+      if (known || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
+      grow(add_state(cf, Y, rep.contacts, false, graph_.states[id].depth));
+      added = true;
+    }
+  }
+  return added;
 }
 
 void Builder::merge_united_states() {
@@ -866,6 +899,7 @@ StateGraph Builder::run() {
     }
     const size_t states = graph_.states.size(), found = discoveries_.size();
     retry_from_other_witnesses();
+    if (!cancelled()) add_relabelled_states();
     if (cancelled() || (graph_.states.size() == states && discoveries_.size() == found)) break;
   }
 

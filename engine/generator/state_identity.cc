@@ -126,10 +126,13 @@ Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& 
 }
 
 SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
-  SceneSymmetry s{axis_of_revolution(scene.B, scene.tol), axis_of_revolution(scene.A, scene.tol),
-                  {}, {}};
+  SceneSymmetry s;
+  s.B = axis_of_revolution(scene.B, scene.tol);
+  s.A = axis_of_revolution(scene.A, scene.tol);
   s.half_turns_A = half_turn_axes(scene.A, scene.tol, s.A);
   s.half_turns_B = half_turn_axes(scene.B, scene.tol, s.B);
+  s.relabelling_A = relabelling_half_turns(scene.A, scene.tol, s.A);
+  s.relabelling_B = relabelling_half_turns(scene.B, scene.tol, s.B);
   return s;
 }
 

@@ -44,6 +44,8 @@ struct SceneSymmetry {
   std::optional<SymmetryAxis> A;           // in A's frame
   std::vector<SymmetryAxis> half_turns_A;  // in A's frame (half_turn_axes)
   std::vector<SymmetryAxis> half_turns_B;  // in B's frame
+  // Half turns that exchange elements (relabelling_half_turns), in each solid's frame.
+  std::vector<SymmetryAxis> relabelling_A, relabelling_B;
   static SceneSymmetry of(const SceneGeometry& scene);
 };
 

@@ -90,49 +90,88 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
   return axis;
 }
 
-std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
-                                         const std::optional<SymmetryAxis>& revolution) {
+namespace {
+
+// The half turns about the candidate axes (the coordinate axes through the solid's origin and
+// through its box centre; those along `revolution` left out, the continuous turn covers them)
+// that map the solid onto itself: every surface onto a surface (checked on a grid, to
+// tol.symmetry_relative) and every face, edge and vertex onto one. `relabelling` picks those
+// that exchange some elements (else those that map every element onto itself).
+std::vector<SymmetryAxis> half_turns(const Solid& S, const Tolerances& tol,
+                                     const std::optional<SymmetryAxis>& revolution,
+                                     bool relabelling) {
   std::vector<SymmetryAxis> out;
   if (S.surfaces.empty() || S.bbox.isEmpty()) return out;
   const std::vector<Eigen::Vector3d> points = box_grid(S);
   std::vector<Eigen::Vector3d> centres = {Eigen::Vector3d::Zero()};
   if (S.bbox.center().norm() > tol.distinct_points) centres.push_back(S.bbox.center());
+  const int n_surfaces = static_cast<int>(S.surfaces.size());
   for (const Eigen::Vector3d& c : centres)
     for (int a = 0; a < 3; ++a) {
       SymmetryAxis axis;
       axis.point = c;
       axis.direction = Eigen::Vector3d::Unit(a);
-      // parallel to the axis of revolution: the continuous turn covers it
       if (revolution && revolution->direction.cross(axis.direction).norm() < 1e-6) continue;
       const Eigen::Matrix3d R = rotation_about(axis.direction, M_PI);
       auto turned = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); };
+      // Each surface's image: the first surface that the turned polynomial equals.
+      std::vector<int> image(n_surfaces, -1);
       bool ok = true;
-      // every surface onto itself
-      for (const Polynomial& g : S.surfaces) {
-        double scale = 0, worst = 0;
-        for (const Eigen::Vector3d& p : points) {
-          const double v = g.value(p);
-          scale = std::max(scale, std::abs(v));
-          worst = std::max(worst, std::abs(v - g.value(turned(p))));
+      for (int i = 0; ok && i < n_surfaces; ++i) {
+        const Polynomial& g = S.surfaces[i];
+        for (int j = 0; j < n_surfaces && image[i] < 0; ++j) {
+          double scale = 0, worst = 0;
+          for (const Eigen::Vector3d& p : points) {
+            const double v = g.value(p);
+            scale = std::max(scale, std::abs(v));
+            worst = std::max(worst, std::abs(S.surfaces[j].value(turned(p)) - v));
+          }
+          if (worst <= tol.symmetry_relative * scale) image[i] = j;
         }
-        ok = ok && worst <= tol.symmetry_relative * scale;
+        ok = image[i] >= 0;
       }
-      // every face, edge and vertex onto itself (one surface may hold several patches, two
-      // surfaces several curves)
+      // Each face, edge and vertex onto one (one surface may hold several patches, two
+      // surfaces several curves); `moved` when any lands on another.
       const double near = tol.distinct_points;
-      for (size_t f = 0; ok && f < S.faces.size(); ++f)
-        ok = S.face_at(S.faces[f].surface, turned(S.faces[f].interior_point), near) ==
-             static_cast<int>(f);
+      bool moved = false;
+      for (size_t f = 0; ok && f < S.faces.size(); ++f) {
+        const int to =
+            S.face_at(image[S.faces[f].surface], turned(S.faces[f].interior_point), near);
+        ok = to >= 0;
+        moved = moved || to != static_cast<int>(f);
+      }
       for (size_t e = 0; ok && e < S.edges.size(); ++e) {
         const Edge& E = S.edges[e];
         if (E.samples.empty()) continue;
-        ok = S.edge_at(E.surface1, E.surface2, turned(E.samples[E.samples.size() / 2].point),
-                       near) == static_cast<int>(e);
+        const Eigen::Vector3d q = turned(E.samples[E.samples.size() / 2].point);
+        int to = S.edge_at(image[E.surface1], image[E.surface2], q, near);
+        if (to < 0) to = S.edge_at(image[E.surface2], image[E.surface1], q, near);
+        ok = to >= 0;
+        moved = moved || to != static_cast<int>(e);
       }
-      for (const Vertex& v : S.vertices) ok = ok && (turned(v.point) - v.point).norm() <= near;
-      if (ok) out.push_back(axis);
+      for (size_t v = 0; ok && v < S.vertices.size(); ++v) {
+        const Eigen::Vector3d q = turned(S.vertices[v].point);
+        int to = -1;
+        for (size_t w = 0; w < S.vertices.size() && to < 0; ++w)
+          if ((S.vertices[w].point - q).norm() <= near) to = static_cast<int>(w);
+        ok = to >= 0;
+        moved = moved || to != static_cast<int>(v);
+      }
+      if (ok && moved == relabelling) out.push_back(axis);
     }
   return out;
+}
+
+}  // namespace
+
+std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
+                                         const std::optional<SymmetryAxis>& revolution) {
+  return half_turns(S, tol, revolution, false);
+}
+
+std::vector<SymmetryAxis> relabelling_half_turns(const Solid& S, const Tolerances& tol,
+                                                 const std::optional<SymmetryAxis>& revolution) {
+  return half_turns(S, tol, revolution, true);
 }
 
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle) {

@@ -38,6 +38,13 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
 std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
                                          const std::optional<SymmetryAxis>& revolution);
 
+// The axes of the half turns (same candidates and checks) that map the solid onto itself but
+// exchange some of its elements: Example 2's lens turned upside down, fA1 <-> fA2. X and X
+// turned about such an axis are one configuration under two labellings, so a state of A's CF
+// implies the state of the exchanged CF there, with the same contacts in space.
+std::vector<SymmetryAxis> relabelling_half_turns(const Solid& S, const Tolerances& tol,
+                                                 const std::optional<SymmetryAxis>& revolution);
+
 // The pose reached by turning A about B's axis `axis_B` by `angle` (radians): X' = R X.
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle);
 // The pose reached by turning A about its own axis `axis_A` by `angle`: A's points move, B's

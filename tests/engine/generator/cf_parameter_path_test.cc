@@ -72,5 +72,49 @@ TEST(CfParameterPath, JoinsCrossingsOfOneSignOnly) {
   EXPECT_FALSE(joined_by_parameter_path(scene, a, c, cf, counters));
 }
 
+Pose pose(double x, double y, double z, double qw, double qx, double qy, double qz) {
+  Pose X;
+  X.position = {x, y, z};
+  X.quaternion = Eigen::Quaterniond(qw, qx, qy, qz);
+  return X;
+}
+
+// Witnesses that transitions leave on a region's boundary: Example 2's lens rim crossing the
+// dish's rims, as session-6 runs of Example 2 reported them (states 6 and 16, 18 and 20 of
+// that graph: one region each, by the crossing sign and the solids' symmetry, yet unjoined).
+// Witness 16's normal lies on the boundary of e1's cone (at the fraction 1 of it, f2's end),
+// 18's on eA's (1.002, just past it) and 20's on e2's (1.001); 6, 16 and 20 cross at 0.008 to
+// 0.012 rad, next to e-e-touch. A walk that kept a witness's own normal at its end made
+// waypoints that detection reads as the neighbouring face's contact (eA-f2, fA2-e2, eA-f3),
+// and no join was found; one whose normals lie a little inside the cones at its ends joins
+// each pair.
+TEST(CfParameterPath, JoinsWitnessesWhoseNormalsLieOnTheirConesBoundaries) {
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(testing::scene_path("example2.yaml")));
+  const SceneSymmetry symmetry = SceneSymmetry::of(scene);
+  const std::pair<Pose, Pose> pairs[] = {
+      {pose(1.830166987592919, -2.41511256808837, 3.928208186016847, 0.6688741623005037,
+            -0.5341099279435503, -0.5122972793156209, -0.06989590463501978),
+       pose(2.774159595118654, -3.6764985005931985, 2.8805499366523084, 0.9826436403226555,
+            -0.10550260835686125, -0.10701675262902861, -0.10875702469300993)},
+      {pose(-3.2532180809341735, 4.223122516140463, -0.6919380378682578, 0.23632793264086724,
+            0.7035198080399171, 0.66983624067939, -0.022986922840481976),
+       pose(3.0539747556624586, -4.051969512103499, -1.047171120766506, 0.920377414023663,
+            0.27658200050422344, 0.25598446394129826, -0.104306121454509)}};
+  const char* cfs[] = {"{(eA-e1, 1)}", "{(eA-e2, 1)}"};
+  for (int k = 0; k < 2; ++k) {
+    const auto& [a, b] = pairs[k];
+    const ContactReport ra = detect_contacts(scene, a), rb = detect_contacts(scene, b);
+    ASSERT_FALSE(ra.penetrating() || rb.penetrating());
+    const ContactFormation cf = ContactFormation::of(ra.contacts);
+    ASSERT_EQ(cf.str(scene), cfs[k]);
+    ASSERT_TRUE(ContactFormation::of(rb.contacts) == cf);
+    // One region by the invariant: the same crossing sign.
+    ASSERT_EQ(region_signature(ra.contacts), region_signature(rb.contacts));
+    MotionCounters counters;
+    EXPECT_TRUE(joined_by_parameter_path(scene, a, b, cf, counters, symmetry)) << cfs[k];
+  }
+}
+
 }  // namespace
 }  // namespace pcsg

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "engine/contact/contact.h"
 #include "engine/generator/graph_io.h"
 #include "generator_test_support.h"
@@ -62,10 +64,22 @@ TEST(Generator, Example1WitnessesAreExactAndTheSeedHasTwoContacts) {
         << cf << " missing; states:\n" << testing::join(sig.states);
 }
 
+// And the states are closed under the lens turned upside down (fA1 <-> fA2): every state's
+// CF with the two caps exchanged is a state's CF too (each is one configuration under the
+// other labelling; the session-6 run lacked {(fA2-e1, 2), (fA2-f1, 1)}).
 TEST(Generator, Example2WitnessesAreExact) {
   const Generated g = generate(load_scene_file(testing::scene_path("example2.yaml")));
   ASSERT_FALSE(g.graph.states.empty());
   expect_witnesses_valid(g);
+  const ElementId fA1 = g.scene.A.find("fA1"), fA2 = g.scene.A.find("fA2");
+  std::set<std::string> cfs;
+  for (const State& s : g.graph.states) cfs.insert(s.cf.str(g.scene));
+  for (const State& s : g.graph.states) {
+    std::vector<PointContact> exchanged = s.contacts;
+    for (PointContact& c : exchanged) c.a = c.a == fA1 ? fA2 : c.a == fA2 ? fA1 : c.a;
+    const std::string image = ContactFormation::of(exchanged).str(g.scene);
+    EXPECT_TRUE(cfs.count(image)) << s.cf.str(g.scene) << " has no counterpart " << image;
+  }
 }
 
 TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {

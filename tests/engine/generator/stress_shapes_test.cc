@@ -82,7 +82,10 @@ TEST(StressShapes, LensTipOnTheDishTip) {
                   "expected (every duplicate joined, both crossing regions of eA-e1 and eA-e2), "
                   "witnesses valid, but the link {(eA-f1, 1)} -- {(fA2-f1, 1)} is missing "
                   "(21 of the 22 pairs), and {(eA-f1, 1), (fA2-e1, 1)} is held twice (no join, "
-                  "cf_parameter_path.h included, connects its two witnesses).";
+                  "cf_parameter_path.h included, connects its two witnesses). Re-measured in "
+                  "session 7 (joins inside the normal cones, relabelled states): the single-"
+                  "contact states as expected, but now its mirror {(eA-f1, 1)} -- "
+                  "{(fA1-f1, 1)} is the one link missing (349 s).";
   const SceneSpec spec = load_scene_file(stress_path("lens_tip_in_dish.yaml"));
   const std::vector<std::string> a = {"fA1", "eA", "fA2"}, b = {"f1", "e1", "f2", "e2", "f3"};
   auto cf = [&](size_t i, size_t j) { return "{(" + a[i] + "-" + b[j] + ", 1)}"; };

@@ -15,6 +15,8 @@ SceneGeometry scene(const std::string& name) {
 
 // Round-off of the axis from a least-squares null vector of O(1) conditions.
 constexpr double kAxisTolerance = 1e-9;
+// Two exact solves of one contact point (solve residual ~1e-12 of the scene's length, ~10).
+constexpr double kSamePoint = 1e-9;
 
 void expect_axis(const std::optional<SymmetryAxis>& axis, const Eigen::Vector3d& point,
                  const Eigen::Vector3d& direction, double length_scale) {
@@ -109,6 +111,39 @@ TEST(Symmetry, HalfTurnAxesOfTheShippedScenes) {
   const SceneSymmetry sym = SceneSymmetry::of(swapped);
   EXPECT_TRUE(sym.half_turns_A.empty());
   EXPECT_EQ(sym.half_turns_B.size(), 3u);
+}
+
+// Half turns that exchange elements: Example 2's lens turned upside down about x or y through
+// its centre (fA1 <-> fA2, its rim onto itself), the three-sphere lens about the axis through
+// its two vertices (spheres 2 and 3 exchanged); none for the ellipsoid, whose half turns keep
+// every element, nor for the bowl.
+TEST(Symmetry, RelabellingHalfTurnsOfTheShippedScenes) {
+  const SceneGeometry ex1 = scene("example1.yaml"), ex2 = scene("example2.yaml");
+  const SceneGeometry three = scene("three_spheres.yaml");
+  EXPECT_TRUE(SceneSymmetry::of(ex1).relabelling_A.empty());
+  const SceneSymmetry s2 = SceneSymmetry::of(ex2);
+  ASSERT_EQ(s2.relabelling_A.size(), 2u);
+  EXPECT_EQ(s2.relabelling_A[0].direction, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(s2.relabelling_A[1].direction, Eigen::Vector3d::UnitY());
+  EXPECT_TRUE(s2.relabelling_B.empty());
+  const SceneSymmetry s3 = SceneSymmetry::of(three);
+  ASSERT_EQ(s3.relabelling_A.size(), 1u);
+  EXPECT_EQ(s3.relabelling_A[0].direction, Eigen::Vector3d::UnitY());
+  // The turn is a symmetry: a witness and its turned pose touch with the same points in B's
+  // frame, the lens's faces exchanged.
+  // (a witness of {(fA1-f2, 1)} from an Example 2 run: the lens's lower cap on the band)
+  Pose X;
+  X.position = {2.7713575129415453, -3.6917931604822436, 3.6994016746080214};
+  X.quaternion = Eigen::Quaterniond(0.9509975793710119, 0.21414117258639462, 0.19765917043229464,
+                                    -0.10333447913362272);
+  const ContactReport a = detect_contacts(ex2, X);
+  const ContactReport b = detect_contacts(ex2, turned_about_A(X, s2.relabelling_A[0], M_PI));
+  ASSERT_EQ(a.contacts.size(), 1u);
+  ASSERT_EQ(b.contacts.size(), 1u);
+  EXPECT_NEAR((a.contacts[0].point_B - b.contacts[0].point_B).norm(), 0, kSamePoint);
+  EXPECT_EQ(ex2.A.element_name(a.contacts[0].a), "fA1");
+  EXPECT_EQ(ex2.A.element_name(b.contacts[0].a), "fA2");
+  EXPECT_EQ(ex2.B.element_name(b.contacts[0].b), "f2");
 }
 
 // Two witnesses of {(fA-e1, 2)} (the ellipsoid across the rim) that Example 1's run reached
