@@ -61,11 +61,7 @@ void FigureWriter::consume(FigureEvent& event) {
   std::visit([&](auto& e) { on(e); }, event);
 }
 
-void FigureWriter::on(StateFound& e) {
-  // each state's own picture, framed on it; the diagram's and the grid's thumbnails are drawn
-  // at the end, framed alike on all states
-  const State& s = e.state;
-  if (!options_.states) return;
+render::Image FigureWriter::draw_state(const State& s) {
   render::StatePictureOptions big;
   big.width = options_.picture_width;
   big.height = options_.picture_height;
@@ -74,11 +70,38 @@ void FigureWriter::on(StateFound& e) {
   big.header = true;
   const render::Image picture = renderer_->render(render::state_frame_request(scene_, s, big));
   render::write_png_fast(picture, path("states/state-" + two_digits(s.id) + ".png"));
+  return picture;
+}
+
+void FigureWriter::on(StateFound& e) {
+  // each state's own picture, framed on it; the diagram's and the grid's thumbnails are drawn
+  // at the end, framed alike on all states
+  const State& s = e.state;
+  if (!options_.states) return;
+  const render::Image picture = draw_state(s);
+  if (static_cast<int>(drawn_.size()) <= s.id) drawn_.resize(s.id + 1);
+  drawn_[s.id] = s;
   if (s.seed && !seed_written_) {  // the first seed: the paper's Fig. 5b / 7b
     seed_written_ = true;
     render::write_png_fast(picture, path("seed.png"));
     summary_.figures.push_back(path("seed.png"));
   }
+}
+
+void FigureWriter::redraw_renumbered_states(const StateGraph& g) {
+  // States that the generator proved one region are merged when it ends and the rest
+  // renumbered (generator.h): a picture drawn under an id that now names another state is
+  // drawn again, and those beyond the last id are removed.
+  for (const State& s : g.states) {
+    const size_t i = static_cast<size_t>(s.id);
+    if (i < drawn_.size() && drawn_[i].cf == s.cf && drawn_[i].pose.position == s.pose.position &&
+        drawn_[i].pose.quaternion.coeffs() == s.pose.quaternion.coeffs())
+      continue;
+    draw_state(s);
+  }
+  for (size_t i = g.states.size(); i < drawn_.size(); ++i)
+    fs::remove(path("states/state-" + two_digits(static_cast<int>(i)) + ".png"));
+  drawn_.resize(g.states.size());
 }
 
 void FigureWriter::on(CandidateTried& e) {
@@ -152,6 +175,7 @@ void FigureWriter::on(GraphFinished& e) {
   summary_.finished = true;
   write_text(path("graph.json"), graph_to_json(g, scene_));
   write_text(path("graph.dot"), graph_to_dot(g, scene_));
+  if (options_.states) redraw_renumbered_states(g);
   // the thumbnails of the diagram and the grid, all framed alike
   std::vector<render::Image> pictures;
   if (options_.diagram || options_.states)

@@ -54,6 +54,9 @@ class FigureWriter {
 
  private:
   void on(StateFound& e);
+  // states/state-NN.png of state s (its id); the picture.
+  render::Image draw_state(const State& s);
+  void redraw_renumbered_states(const StateGraph& g);
   void on(CandidateTried& e);
   void on(GenerationProgress& e) { summary_.progress = e; }
   void on(GraphFinished& e);
@@ -77,6 +80,7 @@ class FigureWriter {
   std::vector<std::vector<render::ContactRole>> current_roles_;
   FigureSummary summary_;
   bool seed_written_ = false;
+  std::vector<State> drawn_;  // the state each states/state-NN.png shows, by NN
 };
 
 }  // namespace pcsg::app
