@@ -354,6 +354,12 @@ class Builder {
   // witness turned so, one configuration under the other labelling, re-detected exactly. Each
   // whose CF and region signature no state has is added and grown. Returns whether any was.
   bool add_relabelled_states();
+  // Each state's witness under each relabelling half turn, re-detected; nullopt where the
+  // re-detection does not touch as the state does (left out rather than trusted).
+  std::vector<std::optional<Discovery>> relabelled_images(int id);
+  // Each LN link's image under the relabelling half turns, between the states the images of
+  // its ends join (the turned motion is a proof: the same motion under the other labelling).
+  void add_relabelled_links();
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
   std::vector<Eigen::Vector3d> probe_goals(const State& s) const;
@@ -601,33 +607,63 @@ void Builder::join_duplicate_states() {
   }
 }
 
+std::vector<std::optional<Discovery>> Builder::relabelled_images(int id) {
+  const State& st = graph_.states[id];
+  std::vector<Pose> turned;
+  for (const SymmetryAxis& h : symmetry_.relabelling_A)
+    turned.push_back(turned_about_A(st.pose, h, M_PI));
+  for (const SymmetryAxis& h : symmetry_.relabelling_B)
+    turned.push_back(turned_about_B(st.pose, h, M_PI));
+  std::vector<std::optional<Discovery>> images;
+  for (const Pose& Y : turned) {
+    ++counters_.detections;
+    ContactReport rep = detect_contacts(scene_, Y);
+    // The same configuration: it touches as the state does.
+    if (rep.penetrating() || rep.contacts.size() != st.contacts.size()) {
+      images.emplace_back();
+      continue;
+    }
+    images.push_back(Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)});
+  }
+  return images;
+}
+
 bool Builder::add_relabelled_states() {
   if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return false;
   bool added = false;
   const int n = static_cast<int>(graph_.states.size());
   for (int id = 0; id < n && !cancelled(); ++id) {
-    std::vector<Pose> images;
-    for (const SymmetryAxis& h : symmetry_.relabelling_A)
-      images.push_back(turned_about_A(graph_.states[id].pose, h, M_PI));
-    for (const SymmetryAxis& h : symmetry_.relabelling_B)
-      images.push_back(turned_about_B(graph_.states[id].pose, h, M_PI));
-    for (const Pose& Y : images) {
-      ++counters_.detections;
-      const ContactReport rep = detect_contacts(scene_, Y);
-      // The same configuration: it touches as the state does (a failed re-detection is left
-      // out rather than trusted).
-      if (rep.penetrating() || rep.contacts.size() != graph_.states[id].contacts.size()) continue;
-      const ContactFormation cf = ContactFormation::of(rep.contacts);
-      const RegionSignature sig = region_signature(rep.contacts);
+    for (std::optional<Discovery>& image : relabelled_images(id)) {
+      if (!image) continue;
+      const RegionSignature sig = region_signature(image->contacts);
       bool known = false;
       for (const State& s : graph_.states)
-        known = known || (s.cf == cf && signatures_[s.id] == sig);
+        known = known || (s.cf == image->cf && signatures_[s.id] == sig);
       if (known || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
-      grow(add_state(cf, Y, rep.contacts, false, graph_.states[id].depth));
+      grow(add_state(image->cf, image->pose, image->contacts, false, graph_.states[id].depth));
       added = true;
     }
   }
   return added;
+}
+
+void Builder::add_relabelled_links() {
+  if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return;
+  const int n = static_cast<int>(graph_.states.size());
+  // image[id][k]: the state the k-th image of id's witness joins, or -1.
+  std::vector<std::vector<int>> image(n);
+  for (int id = 0; id < n && !cancelled(); ++id)
+    for (std::optional<Discovery>& d : relabelled_images(id))
+      image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+  if (cancelled()) return;
+  const std::vector<Link> links = graph_.links;
+  for (const Link& l : links) {
+    if (l.kind != LinkKind::LN) continue;
+    for (size_t k = 0; k < image[l.from].size(); ++k) {
+      const int from = image[l.from][k], to = image[l.to][k];
+      if (from >= 0 && to >= 0) add_link(from, to, l.motion + ", relabelled");
+    }
+  }
 }
 
 void Builder::merge_united_states() {
@@ -904,6 +940,7 @@ StateGraph Builder::run() {
   }
 
   if (!cancelled()) retry_missing_links();
+  if (!cancelled()) add_relabelled_links();
   if (!cancelled()) join_duplicate_states();
   merge_united_states();
 

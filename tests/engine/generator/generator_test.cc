@@ -64,9 +64,10 @@ TEST(Generator, Example1WitnessesAreExactAndTheSeedHasTwoContacts) {
         << cf << " missing; states:\n" << testing::join(sig.states);
 }
 
-// And the states are closed under the lens turned upside down (fA1 <-> fA2): every state's
-// CF with the two caps exchanged is a state's CF too (each is one configuration under the
-// other labelling; the session-6 run lacked {(fA2-e1, 2), (fA2-f1, 1)}).
+// And the states and links are closed under the lens turned upside down (fA1 <-> fA2): every
+// state's CF with the two caps exchanged is a state's CF too, and every link's image a link
+// (each is one configuration under the other labelling; the session-6 run lacked
+// {(fA2-e1, 2), (fA2-f1, 1)}; a run without the link closure lacked six links' images).
 TEST(Generator, Example2WitnessesAreExact) {
   const Generated g = generate(load_scene_file(testing::scene_path("example2.yaml")));
   ASSERT_FALSE(g.graph.states.empty());
@@ -74,11 +75,23 @@ TEST(Generator, Example2WitnessesAreExact) {
   const ElementId fA1 = g.scene.A.find("fA1"), fA2 = g.scene.A.find("fA2");
   std::set<std::string> cfs;
   for (const State& s : g.graph.states) cfs.insert(s.cf.str(g.scene));
-  for (const State& s : g.graph.states) {
+  auto image = [&](const State& s) {
     std::vector<PointContact> exchanged = s.contacts;
     for (PointContact& c : exchanged) c.a = c.a == fA1 ? fA2 : c.a == fA2 ? fA1 : c.a;
-    const std::string image = ContactFormation::of(exchanged).str(g.scene);
-    EXPECT_TRUE(cfs.count(image)) << s.cf.str(g.scene) << " has no counterpart " << image;
+    return ContactFormation::of(exchanged).str(g.scene);
+  };
+  for (const State& s : g.graph.states)
+    EXPECT_TRUE(cfs.count(image(s))) << s.cf.str(g.scene) << " has no counterpart " << image(s);
+  // So are the links (as CF pairs): each link's image is a link.
+  std::set<std::pair<std::string, std::string>> links;
+  for (const Link& l : g.graph.links)
+    if (l.kind == LinkKind::LN)
+      links.insert({g.graph.states[l.from].cf.str(g.scene), g.graph.states[l.to].cf.str(g.scene)});
+  for (const Link& l : g.graph.links) {
+    if (l.kind != LinkKind::LN) continue;
+    EXPECT_TRUE(links.count({image(g.graph.states[l.from]), image(g.graph.states[l.to])}))
+        << g.graph.states[l.from].cf.str(g.scene) << " -> " << g.graph.states[l.to].cf.str(g.scene)
+        << " has no counterpart";
   }
 }
 
