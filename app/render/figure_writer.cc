@@ -104,6 +104,77 @@ void FigureWriter::redraw_renumbered_states(const StateGraph& g) {
   drawn_.resize(g.states.size());
 }
 
+std::string FigureWriter::transition_folder(const render::TransitionInfo& info, int index,
+                                            std::map<std::string, int>& owners) const {
+  const std::string slug = render::transition_slug(info);
+  const auto [it, first] = owners.emplace(slug, index);
+  return path("transitions/" +
+              (first || it->second == index ? slug : slug + "-c" + std::to_string(index)));
+}
+
+void FigureWriter::renumber_transitions(const StateGraph& g) {
+  struct Move {
+    DrawnTransition* d;
+    std::string folder;
+    bool redraw;  // the ids changed, not only the folder's name
+  };
+  std::vector<Move> moves;
+  std::map<std::string, int> owners;
+  for (DrawnTransition& d : transitions_) {  // in the candidates' order, as streamed
+    if (d.index < 0 || d.index >= static_cast<int>(g.candidates.size())) continue;
+    const Candidate& c = g.candidates[d.index];
+    render::TransitionInfo& info = d.record.info;
+    const int to = info.feasible ? c.to : info.to;
+    const bool renumbered = c.from != info.from || to != info.to;
+    info.from = c.from;
+    info.to = to;
+    const std::string folder = transition_folder(info, d.index, owners);
+    if (renumbered || folder != d.folder) moves.push_back({&d, folder, renumbered});
+  }
+  // Out of the way first: a folder's new name may be another's old one.
+  for (Move& m : moves) {
+    const std::string staging = path("transitions/.renumbering-" + std::to_string(m.d->index));
+    fs::remove_all(staging);
+    fs::rename(m.d->folder, staging);
+    m.d->folder = staging;
+  }
+  for (Move& m : moves) {
+    DrawnTransition& d = *m.d;
+    fs::remove_all(m.folder);
+    if (!m.redraw) {
+      fs::rename(d.folder, m.folder);
+      d.folder = m.folder;
+      continue;
+    }
+    const render::TransitionRecord& r = d.record;
+    fs::create_directories(m.folder);
+    std::vector<render::Image> cells;
+    for (size_t k = 0; k < d.ordinals.size(); ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame-%04d.png", d.ordinals[k]);
+      const render::Image old = render::read_png((fs::path(d.folder) / name).string());
+      const int top = old.height - d.view_height;
+      if (top < 0)
+        throw Error("transition frame '" + std::string(name) + "' is shorter than its view");
+      const render::Image view = render::cropped(old, 0, top, old.width, d.view_height);
+      render::write_png_fast(render::add_transition_header(view, scene_, r.info, r.frames[k],
+                                                           r.start, r.roles[k], text_),
+                             (fs::path(m.folder) / name).string());
+      const int h = view.height * options_.sheet_cell_width / view.width;
+      cells.push_back(render::resized(view, options_.sheet_cell_width, std::max(1, h)));
+    }
+    if (!cells.empty())
+      render::write_png_fast(
+          render::transition_contact_sheet(r.info, cells, r.frames, r.roles, r.start, scene_,
+                                           options_.sheet_cell_width, text_),
+          (fs::path(m.folder) / "contact_sheet.png").string());
+    write_text((fs::path(m.folder) / "frames.json").string(),
+               render::transition_to_json(r, scene_));
+    fs::remove_all(d.folder);
+    d.folder = m.folder;
+  }
+}
+
 void FigureWriter::on(CandidateTried& e) {
   ++summary_.candidates;
   summary_.feasible += e.candidate.feasible;
@@ -111,7 +182,7 @@ void FigureWriter::on(CandidateTried& e) {
 
 void FigureWriter::on(TransitionStarted& e) {
   current_ = e;
-  current_folder_ = path("transitions/" + render::transition_slug(e.info));
+  current_folder_ = transition_folder(e.info, e.index, folder_owners_);
   fs::create_directories(current_folder_);
   // a sequence written again (a second run into the same folder) must not keep old frames
   for (const auto& entry : fs::directory_iterator(current_folder_))
@@ -119,6 +190,7 @@ void FigureWriter::on(TransitionStarted& e) {
   sheet_frames_.clear();
   sheet_meta_.clear();
   current_roles_.clear();
+  current_ordinals_.clear();
   // one framing for the whole sequence: the animation does not jitter
   current_renderer_.reset();
   current_scene_ = std::make_unique<SceneGeometry>(
@@ -139,6 +211,8 @@ void FigureWriter::on(TransitionFrameReady& e) {
   sheet_frames_.push_back(render::resized(view, options_.sheet_cell_width, std::max(1, h)));
   sheet_meta_.push_back(std::move(e.frame));
   current_roles_.push_back(std::move(e.roles));
+  current_ordinals_.push_back(e.ordinal);
+  current_view_height_ = view.height;
   ++summary_.frames;
 }
 
@@ -155,6 +229,9 @@ void FigureWriter::on(TransitionFinished& e) {
                                   std::move(current_roles_)};
   write_text((fs::path(current_folder_) / "frames.json").string(),
              render::transition_to_json(record, scene_));
+  transitions_.push_back({current_.index, current_folder_, std::move(record),
+                          std::move(current_ordinals_), current_view_height_});
+  current_ordinals_.clear();
   sheet_frames_.clear();
   sheet_meta_.clear();
   current_roles_.clear();
@@ -176,6 +253,7 @@ void FigureWriter::on(GraphFinished& e) {
   write_text(path("graph.json"), graph_to_json(g, scene_));
   write_text(path("graph.dot"), graph_to_dot(g, scene_));
   if (options_.states) redraw_renumbered_states(g);
+  renumber_transitions(g);
   // the thumbnails of the diagram and the grid, all framed alike
   std::vector<render::Image> pictures;
   if (options_.diagram || options_.states)

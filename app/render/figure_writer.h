@@ -7,6 +7,7 @@
 //   diagram.png, diagram.dot      the graph as a diagram of state pictures (Fig. 6)
 //   graph.json, graph.dot         the graph (engine/generator/graph_io.h)
 //   transitions/<from>-<cf>/      frame-NNNN.png, contact_sheet.png, frames.json per candidate
+//                                 (-c<candidate> after it for a second candidate of that name)
 #include <chrono>
 #include <map>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "render/scene_renderer.h"
 #include "render/state_diagram.h"
 #include "render/text_painter.h"
+#include "render/transition_json.h"
 
 namespace pcsg::app {
 
@@ -57,6 +59,16 @@ class FigureWriter {
   // states/state-NN.png of state s (its id); the picture.
   render::Image draw_state(const State& s);
   void redraw_renumbered_states(const StateGraph& g);
+  // Transitions whose start or end state was renumbered by the final merge (as for the
+  // states' pictures): moved to the folder of their final ids, their frames' headers, contact
+  // sheet and frames.json written again with those ids (the 3D views, read back from the
+  // frames, are kept: they do not show ids).
+  void renumber_transitions(const StateGraph& g);
+  // A transition's folder: "<from>-<target CF>", or with "-c<candidate index>" after it when
+  // an earlier candidate (in `owners`, by index) has that name (two candidates from one state
+  // toward one CF: a retry from another witness).
+  std::string transition_folder(const render::TransitionInfo& info, int index,
+                                std::map<std::string, int>& owners) const;
   void on(CandidateTried& e);
   void on(GenerationProgress& e) { summary_.progress = e; }
   void on(GraphFinished& e);
@@ -81,6 +93,18 @@ class FigureWriter {
   FigureSummary summary_;
   bool seed_written_ = false;
   std::vector<State> drawn_;  // the state each states/state-NN.png shows, by NN
+  // every transition drawn, as written (for renumber_transitions)
+  struct DrawnTransition {
+    int index = -1;  // the candidate's
+    std::string folder;
+    render::TransitionRecord record;  // with the ids streamed when it was drawn
+    std::vector<int> ordinals;        // the frames' file numbers
+    int view_height = 0;              // of the 3D view under each frame's header
+  };
+  std::vector<DrawnTransition> transitions_;
+  std::vector<int> current_ordinals_;
+  std::map<std::string, int> folder_owners_;  // transition_folder's names, as streamed
+  int current_view_height_ = 0;
 };
 
 }  // namespace pcsg::app

@@ -697,6 +697,10 @@ void Builder::merge_united_states() {
     links.push_back(l);
   }
   for (Candidate& c : graph_.candidates) {
+    // A candidate tried from a state merged into another started at that state's witness,
+    // which is not the merged state's own: it keeps the pose, so that a replay (pcsg figures
+    // from a stored graph) starts where the motion did.
+    if (!c.start && representative(c.from) != c.from) c.start = graph_.states[c.from].pose;
     c.from = new_id[c.from];
     if (c.to >= 0) c.to = new_id[c.to];
   }

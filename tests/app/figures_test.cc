@@ -2,8 +2,7 @@
 // event lost, order kept, producers released when the consumer stops), and end-to-end runs of
 // the binary on stored graphs (tests/data/graphs), which keep them to a few seconds.
 #include <gtest/gtest.h>
-
-#include "run_pcsg.h"
+#include <sys/wait.h>
 
 #include <array>
 #include <chrono>
@@ -11,11 +10,12 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
-#include <sys/wait.h>
 #include <thread>
 
 #include "app/render/graph_event_stream.h"
+#include "run_pcsg.h"
 
 namespace pcsg::app {
 namespace {
@@ -234,6 +234,40 @@ TEST(FiguresCommandTest, StatePicturesFollowTheFinalNumbering) {
     EXPECT_TRUE(same) << f.path().filename() << " differs from the stored graph's picture";
   }
   EXPECT_EQ(pictures, states);
+}
+
+// The same for the transitions: a folder drawn while the graph streamed carries the streaming
+// id of its start state ("N-<target CF>") in its name, its frames' headers, its contact sheet
+// and frames.json; after the final merge each must carry the final ids, exactly as a drawing
+// of the written graph.json does. (Before session 8 they kept the streaming ids: the torus's
+// 13 states merge into 12.) About 200 s: the torus's generation and two drawings of its
+// candidates' motions, small and with few frames.
+TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
+  const fs::path live = fresh_dir("renumbered_tr_live"), stored = fresh_dir("renumbered_tr_stored");
+  const std::string common = " -q --scene " + source("scenes/torus.yaml") +
+                             " --only transitions --size 160x120 --max-frames 3 --out ";
+  const ExeRun r = run_pcsg("figures" + common + live.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const fs::path graph = live / "torus" / "graph.json";
+  const ExeRun again = run_pcsg("figures --graph " + graph.string() + common + stored.string());
+  ASSERT_EQ(again.exit_code, 0) << again.out;
+  std::set<std::string> folders, want;
+  for (const auto& d : fs::directory_iterator(live / "torus" / "transitions")) {
+    folders.insert(d.path().filename().string());
+    std::ifstream fj(d.path() / "frames.json");
+    const json frames = json::parse(fj);
+    const std::string name = d.path().filename().string();
+    EXPECT_EQ(name.substr(0, name.find('-')), std::to_string(frames["from"].get<int>()));
+    for (const auto& f : fs::directory_iterator(d.path())) {
+      const fs::path twin = stored / "torus" / "transitions" / name / f.path().filename();
+      EXPECT_TRUE(file_bytes(f.path()) == file_bytes(twin))
+          << name << "/" << f.path().filename().string() << " differs from the stored graph's";
+    }
+  }
+  for (const auto& d : fs::directory_iterator(stored / "torus" / "transitions"))
+    want.insert(d.path().filename().string());
+  EXPECT_EQ(folders, want);
+  EXPECT_FALSE(folders.empty());
 }
 
 TEST(FiguresCommandTest, RejectsUnknownParts) {
