@@ -117,6 +117,7 @@ void run_scene(const Args& a, const std::string& scene_file, const std::string& 
   w.diagram = wants("diagram");
   w.transitions = wants("transitions");
   w.motion_labels = !a.no_motion_labels;
+  w.every_transition = !a.failed_only && a.candidates.empty();
   PipelineOptions p;
   p.generator.threads = a.threads;
   p.transitions = w.transitions;

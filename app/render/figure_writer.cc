@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "engine/core/error.h"
 #include "engine/generator/graph_io.h"
@@ -163,16 +164,33 @@ void FigureWriter::renumber_transitions(const StateGraph& g) {
       const int h = view.height * options_.sheet_cell_width / view.width;
       cells.push_back(render::resized(view, options_.sheet_cell_width, std::max(1, h)));
     }
-    if (!cells.empty())
-      render::write_png_fast(
-          render::transition_contact_sheet(r.info, cells, r.frames, r.roles, r.start, scene_,
-                                           options_.sheet_cell_width, text_),
-          (fs::path(m.folder) / "contact_sheet.png").string());
-    write_text((fs::path(m.folder) / "frames.json").string(),
-               render::transition_to_json(r, scene_));
+    write_transition_summary(m.folder, r, cells);
     fs::remove_all(d.folder);
     d.folder = m.folder;
   }
+}
+
+void FigureWriter::write_transition_summary(const std::string& folder,
+                                            const render::TransitionRecord& r,
+                                            const std::vector<render::Image>& cells) {
+  if (!cells.empty())  // the cells already have the sheet's cell width: no second resize
+    render::write_png_fast(
+        render::transition_contact_sheet(r.info, cells, r.frames, r.roles, r.start, scene_,
+                                         options_.sheet_cell_width, text_),
+        (fs::path(folder) / "contact_sheet.png").string());
+  write_text((fs::path(folder) / "frames.json").string(), render::transition_to_json(r, scene_));
+}
+
+void FigureWriter::remove_stale_transitions() {
+  const fs::path top = path("transitions");
+  if (!fs::is_directory(top)) return;
+  std::set<fs::path> written;
+  for (const DrawnTransition& d : transitions_) written.insert(fs::path(d.folder).filename());
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(top))
+    if (entry.is_directory() && written.count(entry.path().filename()) == 0)
+      stale.push_back(entry.path());
+  for (const fs::path& p : stale) fs::remove_all(p);
 }
 
 void FigureWriter::on(CandidateTried& e) {
@@ -218,17 +236,9 @@ void FigureWriter::on(TransitionFrameReady& e) {
 
 void FigureWriter::on(TransitionFinished& e) {
   (void)e;
-  if (!sheet_frames_.empty()) {
-    // the sheet's cells already have the cell width: no second resize
-    const render::Image sheet = render::transition_contact_sheet(
-        current_.info, sheet_frames_, sheet_meta_, current_roles_, current_.start, scene_,
-        options_.sheet_cell_width, text_);
-    render::write_png_fast(sheet, (fs::path(current_folder_) / "contact_sheet.png").string());
-  }
   render::TransitionRecord record{current_.info, current_.start, std::move(sheet_meta_),
                                   std::move(current_roles_)};
-  write_text((fs::path(current_folder_) / "frames.json").string(),
-             render::transition_to_json(record, scene_));
+  write_transition_summary(current_folder_, record, sheet_frames_);
   transitions_.push_back({current_.index, current_folder_, std::move(record),
                           std::move(current_ordinals_), current_view_height_});
   current_ordinals_.clear();
@@ -254,6 +264,7 @@ void FigureWriter::on(GraphFinished& e) {
   write_text(path("graph.dot"), graph_to_dot(g, scene_));
   if (options_.states) redraw_renumbered_states(g);
   renumber_transitions(g);
+  if (options_.transitions && options_.every_transition) remove_stale_transitions();
   // the thumbnails of the diagram and the grid, all framed alike
   std::vector<render::Image> pictures;
   if (options_.diagram || options_.states)

@@ -31,6 +31,9 @@ struct FigureWriterOptions {
   render::TransitionFrameStyle frame;              // transition frames
   int sheet_cell_width = 400;                      // frames in a contact sheet
   bool states = true, diagram = true, transitions = true;
+  // every candidate's motion is drawn: at the end, transitions/ keeps only this run's folders
+  // (a run into a used folder would otherwise keep an older graph's transitions)
+  bool every_transition = false;
   bool motion_labels = true;
 };
 
@@ -64,6 +67,12 @@ class FigureWriter {
   // sheet and frames.json written again with those ids (the 3D views, read back from the
   // frames, are kept: they do not show ids).
   void renumber_transitions(const StateGraph& g);
+  // With every_transition: removes the folders under transitions/ this run did not write.
+  void remove_stale_transitions();
+  // A transition's contact sheet (of `cells`, the views at the sheet's cell width) and
+  // frames.json, into `folder`.
+  void write_transition_summary(const std::string& folder, const render::TransitionRecord& r,
+                                const std::vector<render::Image>& cells);
   // A transition's folder: "<from>-<target CF>", or with "-c<candidate index>" after it when
   // an earlier candidate (in `owners`, by index) has that name (two candidates from one state
   // toward one CF: a retry from another witness).

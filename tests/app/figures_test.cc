@@ -249,8 +249,13 @@ TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
   const ExeRun r = run_pcsg("figures" + common + live.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const fs::path graph = live / "torus" / "graph.json";
+  // an older run's transition in the folder drawn into: a drawing of every candidate removes it
+  const fs::path stale = stored / "torus" / "transitions" / "99-fA-f1x1";
+  fs::create_directories(stale);
+  std::ofstream(stale / "frames.json") << "{}";
   const ExeRun again = run_pcsg("figures --graph " + graph.string() + common + stored.string());
   ASSERT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_FALSE(fs::exists(stale)) << "an older run's transition folder is kept";
   std::set<std::string> folders, want;
   for (const auto& d : fs::directory_iterator(live / "torus" / "transitions")) {
     folders.insert(d.path().filename().string());
@@ -268,6 +273,15 @@ TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
     want.insert(d.path().filename().string());
   EXPECT_EQ(folders, want);
   EXPECT_FALSE(folders.empty());
+
+  // drawing some candidates only (--candidate) leaves the other candidates' folders alone
+  const ExeRun one =
+      run_pcsg("figures --graph " + graph.string() + common + stored.string() + " --candidate 0");
+  ASSERT_EQ(one.exit_code, 0) << one.out;
+  std::set<std::string> after;
+  for (const auto& d : fs::directory_iterator(stored / "torus" / "transitions"))
+    after.insert(d.path().filename().string());
+  EXPECT_EQ(after, want);
 }
 
 TEST(FiguresCommandTest, RejectsUnknownParts) {
