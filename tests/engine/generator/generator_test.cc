@@ -72,6 +72,8 @@ TEST(Generator, Example2WitnessesAreExact) {
   const Generated g = generate(load_scene_file(testing::scene_path("example2.yaml")));
   ASSERT_FALSE(g.graph.states.empty());
   expect_witnesses_valid(g);
+  // the reference of the scaled copies' tests (stress_test.cc)
+  testing::expect_stored_signature(testing::signature(g.graph, g.scene), "example2");
   const ElementId fA1 = g.scene.A.find("fA1"), fA2 = g.scene.A.find("fA2");
   std::set<std::string> cfs;
   for (const State& s : g.graph.states) cfs.insert(s.cf.str(g.scene));

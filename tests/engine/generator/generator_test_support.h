@@ -1,7 +1,12 @@
 #pragma once
 // Shared by the generator tests: loading the shipped scenes, a graph's comparable signature.
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,6 +49,61 @@ inline std::string join(const std::vector<std::string>& v) {
   std::string out;
   for (const auto& s : v) out += "  " + s + "\n";
   return out;
+}
+
+// A signature stored as text, tests/data/signatures/<name>.txt: one "state <CF>" line per
+// distinct state CF and one "link <CF> -> <CF>" line per distinct LN link, sorted as
+// signature() sorts them ('#' lines are comments). It is the reference of tests whose own
+// generation of it would cost too much (Example 2 under scaling, ~6 minutes per run), and is
+// itself checked against a live generation (Generator.Example2WitnessesAreExact).
+inline std::string signature_file(const std::string& name) {
+  return std::string(PCSG_SOURCE_DIR) + "/tests/data/signatures/" + name + ".txt";
+}
+
+inline std::string signature_text(const GraphSignature& s) {
+  std::string out;
+  for (const std::string& st : s.states) out += "state " + st + "\n";
+  for (const std::string& l : s.links) out += "link " + l + "\n";
+  return out;
+}
+
+inline GraphSignature read_signature(const std::string& name) {
+  std::ifstream in(signature_file(name));
+  if (!in) throw std::runtime_error("cannot read " + signature_file(name));
+  GraphSignature s;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (line.rfind("state ", 0) == 0) {
+      s.states.push_back(line.substr(6));
+    } else if (line.rfind("link ", 0) == 0) {
+      s.links.push_back(line.substr(5));
+    } else {
+      throw std::runtime_error(signature_file(name) + ": unexpected line '" + line + "'");
+    }
+  }
+  return s;
+}
+
+// `have` equals the stored signature `name`; on a difference the lines only one side has are
+// listed, and `have` is written to signatures/<name>.txt in the working directory (the build's
+// tests folder) to be reviewed and copied over the stored one when the change is intended.
+inline void expect_stored_signature(const GraphSignature& have, const std::string& name) {
+  const GraphSignature want = read_signature(name);
+  if (have == want) return;
+  auto only = [](const std::vector<std::string>& a, const std::vector<std::string>& b) {
+    std::vector<std::string> out;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+    return out;
+  };
+  std::filesystem::create_directories("signatures");
+  std::ofstream("signatures/" + name + ".txt") << signature_text(have);
+  ADD_FAILURE() << "the graph differs from " << signature_file(name) << " (this run's written to "
+                << std::filesystem::absolute("signatures/" + name + ".txt").string() << ")\n"
+                << "states only here:\n"
+                << join(only(have.states, want.states)) << "states only there:\n"
+                << join(only(want.states, have.states)) << "links only here:\n"
+                << join(only(have.links, want.links)) << "links only there:\n"
+                << join(only(want.links, have.links));
 }
 
 }  // namespace pcsg::testing
