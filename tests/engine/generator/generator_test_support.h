@@ -27,9 +27,7 @@ inline std::string scene_path(const std::string& name) {
 struct GraphSignature {
   std::vector<std::string> states;
   std::vector<std::string> links;
-  bool operator==(const GraphSignature& o) const {
-    return states == o.states && links == o.links;
-  }
+  bool operator==(const GraphSignature& o) const { return states == o.states && links == o.links; }
 };
 
 inline GraphSignature signature(const StateGraph& g, const SceneGeometry& scene) {
