@@ -1,4 +1,5 @@
 // pcsg generate SCENE [-o DIR] [--threads N]: the point-contact state graph of a scene.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -64,6 +65,19 @@ void run(const Args& a) {
               "queries, %.3f s (generation %.3f s)\n",
               spec.name.c_str(), g.states.size(), g.links.size(), g.candidates.size(), feasible,
               g.stats.collision_queries, total, g.stats.seconds);
+  // where the queries went: the generator's phases, largest share first
+  std::string phases;
+  auto by_phase = g.stats.queries_by_phase;
+  std::stable_sort(by_phase.begin(), by_phase.end(),
+                   [](const auto& x, const auto& y) { return x.second > y.second; });
+  for (const auto& [phase, queries] : by_phase) {
+    if (queries == 0) continue;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s%s %.0f%%", phases.empty() ? "" : ", ", phase.c_str(),
+                  100.0 * queries / std::max(1L, g.stats.collision_queries));
+    phases += buf;
+  }
+  std::printf("  collision queries by phase: %s\n", phases.c_str());
   for (const State& s : g.states)
     std::printf("  state %d%s: %s\n", s.id, s.seed ? " (seed)" : "", s.cf.str(scene).c_str());
   std::printf("wrote %s/graph.json and %s/graph.dot\n", a.out.c_str(), a.out.c_str());

@@ -1,6 +1,7 @@
 #include "engine/generator/generator.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -307,6 +308,23 @@ struct Probe {
   Eigen::Vector3d vector;
 };
 
+// The parts of a run that ask for collision queries, for GraphStats::queries_by_phase: where
+// the time goes (each query attributed to the innermost part running when it was counted).
+enum class Phase {
+  Seeds,         // the automatic seed search or the listed seeds' projections
+  Motions,       // the transition motions of the hypotheses of each BFS level
+  Probes,        // the upward probes (pushes and tips) of each BFS level
+  Identity,      // joins deciding whether a witness lies in a known state's region
+  Retries,       // hypotheses tried again from a state's other witnesses
+  MissingLinks,  // hypotheses tried again from waypoints toward a CF's states
+  Relabelling,   // the states and links the solids' relabelling half turns imply
+};
+constexpr const char* kPhaseNames[] = {
+    "seeds",          "transition motions",           "upward probes",
+    "state identity", "retries from other witnesses", "missing-link retries",
+    "relabelling"};
+constexpr int kPhases = sizeof(kPhaseNames) / sizeof(kPhaseNames[0]);
+
 class Builder {
  public:
   Builder(const SceneGeometry& scene, const GeneratorOptions& options,
@@ -371,6 +389,27 @@ class Builder {
   SceneSymmetry symmetry_;
   StateGraph graph_;
   MotionCounters counters_;
+  // Collision queries per Phase so far, and the phase now running with the count at its start.
+  std::array<long, kPhases> phase_queries_{};
+  Phase phase_ = Phase::Seeds;
+  long phase_start_ = 0;
+  void switch_phase(Phase p) {
+    phase_queries_[static_cast<int>(phase_)] += counters_.detections - phase_start_;
+    phase_start_ = counters_.detections;
+    phase_ = p;
+  }
+  // Attributes the queries counted while it lives to `p`, then returns to the phase before.
+  class PhaseScope {
+   public:
+    PhaseScope(Builder& b, Phase p) : b_(b), before_(b.phase_) { b_.switch_phase(p); }
+    ~PhaseScope() { b_.switch_phase(before_); }
+    PhaseScope(const PhaseScope&) = delete;
+    PhaseScope& operator=(const PhaseScope&) = delete;
+
+   private:
+    Builder& b_;
+    Phase before_;
+  };
   std::map<std::pair<int, int>, bool> linked_;
   struct Witness {
     Pose pose;
@@ -410,6 +449,7 @@ int Builder::representative(int id) {
 
 int Builder::find_state(const ContactFormation& cf, const Pose& pose,
                         const std::vector<PointContact>& contacts) {
+  PhaseScope phase(*this, Phase::Identity);
   const RegionSignature sig = region_signature(contacts);
   int found = -1;
   for (const State& s : graph_.states) {
@@ -553,7 +593,10 @@ void Builder::grow(int seed_id) {
     std::vector<int> next_frontier;
     for (size_t j = 0; j < jobs.size(); ++j) {
       TryResult& r = results[j];
-      counters_.merge(r.counters);
+      {
+        PhaseScope phase(*this, Phase::Motions);
+        counters_.merge(r.counters);
+      }
       const int from = jobs[j].first;
       for (Reached& t : r.targets) {
         Candidate& c = t.candidate;
@@ -578,7 +621,10 @@ void Builder::grow(int seed_id) {
                                static_cast<int>(jobs.size()));
     }
     for (size_t k = 0; k < probes.size(); ++k) {
-      counters_.merge(probe_counters[k]);
+      {
+        PhaseScope phase(*this, Phase::Probes);
+        counters_.merge(probe_counters[k]);
+      }
       if (probed[k] && adds_one_contact(graph_.states[probes[k].state].cf, probed[k]->cf))
         discoveries_.push_back({probes[k].state, std::move(*probed[k])});
     }
@@ -588,6 +634,7 @@ void Builder::grow(int seed_id) {
 }
 
 void Builder::join_duplicate_states() {
+  PhaseScope phase(*this, Phase::Identity);
   const int n = static_cast<int>(graph_.states.size());
   for (int i = 0; i < n && !cancelled(); ++i) {
     for (int j = i + 1; j < n; ++j) {
@@ -629,6 +676,7 @@ std::vector<std::optional<Discovery>> Builder::relabelled_images(int id) {
 }
 
 bool Builder::add_relabelled_states() {
+  PhaseScope phase(*this, Phase::Relabelling);
   if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return false;
   bool added = false;
   const int n = static_cast<int>(graph_.states.size());
@@ -648,6 +696,7 @@ bool Builder::add_relabelled_states() {
 }
 
 void Builder::add_relabelled_links() {
+  PhaseScope phase(*this, Phase::Relabelling);
   if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return;
   const int n = static_cast<int>(graph_.states.size());
   // image[id][k]: the state the k-th image of id's witness joins, or -1.
@@ -709,6 +758,7 @@ void Builder::merge_united_states() {
 }
 
 void Builder::retry_from_other_witnesses() {
+  PhaseScope phase(*this, Phase::Retries);
   for (bool found_new = true; found_new && !cancelled();) {
     found_new = false;
     // The motions this pass will try as things stand, run ahead on the worker threads (each
@@ -834,6 +884,7 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) 
 }
 
 void Builder::retry_missing_links() {
+  PhaseScope phase(*this, Phase::MissingLinks);
   const int n = static_cast<int>(graph_.states.size());
   for (int id = 0; id < n && !cancelled(); ++id) {
     for (const Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts)) {
@@ -894,6 +945,7 @@ RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& co
 StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<SeedCandidate> seeds;
+  switch_phase(Phase::Seeds);
   if (scene_.spec.auto_seeds) {
     seeds = find_seed_candidates(scene_, counters_, options_.threads);
   } else {
@@ -951,6 +1003,9 @@ StateGraph Builder::run() {
   graph_.stats.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   graph_.stats.collision_queries = counters_.detections;
+  switch_phase(phase_);  // the running phase's queries so far
+  for (int p = 0; p < kPhases; ++p)
+    graph_.stats.queries_by_phase.emplace_back(kPhaseNames[p], phase_queries_[p]);
   graph_.stats.pair_solves = counters_.pair_solves;
   graph_.stats.motion_steps = counters_.steps;
   graph_.stats.max_keep_drift = counters_.max_keep_drift;

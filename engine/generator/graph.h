@@ -55,6 +55,9 @@ struct GraphStats {
   double max_keep_drift = 0;
   double max_step_penetration = 0;
   double max_witness_residual = 0;
+  // The collision queries by the part of the generator that asked them, in a fixed order
+  // (generator.cc, kPhaseNames); they sum to collision_queries.
+  std::vector<std::pair<std::string, long>> queries_by_phase;
 };
 
 struct StateGraph {

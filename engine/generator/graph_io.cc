@@ -95,6 +95,9 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                         {"collision_queries", graph.stats.collision_queries},
                         {"pair_solves", graph.stats.pair_solves},
                         {"motion_steps", graph.stats.motion_steps}};
+  ordered_json phases = ordered_json::object();
+  for (const auto& [phase, queries] : graph.stats.queries_by_phase) phases[phase] = queries;
+  stats["collision_queries_by_phase"] = phases;
   if (options.include_timing) stats["seconds"] = graph.stats.seconds;
   j["stats"] = stats;
   return j.dump(2) + "\n";

@@ -105,6 +105,28 @@ TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
   EXPECT_EQ(graph_to_json(one.graph, one.scene, opt), graph_to_json(two.graph, two.scene, opt));
 }
 
+// Every collision query is attributed to one phase of the run, named in a fixed order (the
+// summary of `pcsg generate` and graph.json's stats). On the lens against a ball (~1 s).
+TEST(Generator, QueriesByPhaseAddUpToTheTotal) {
+  const Generated g =
+      generate(load_scene_file(testing::scene_path("stress/weak_edge_sine_0.1.yaml")));
+  const std::vector<std::string> names = {
+      "seeds",          "transition motions",           "upward probes",
+      "state identity", "retries from other witnesses", "missing-link retries",
+      "relabelling"};
+  ASSERT_EQ(g.graph.stats.queries_by_phase.size(), names.size());
+  long sum = 0;
+  for (size_t k = 0; k < names.size(); ++k) {
+    EXPECT_EQ(g.graph.stats.queries_by_phase[k].first, names[k]);
+    EXPECT_GE(g.graph.stats.queries_by_phase[k].second, 0);
+    sum += g.graph.stats.queries_by_phase[k].second;
+  }
+  EXPECT_EQ(sum, g.graph.stats.collision_queries);
+  // the seed search and the motions of its three states both ask
+  EXPECT_GT(g.graph.stats.queries_by_phase[0].second, 0);
+  EXPECT_GT(g.graph.stats.queries_by_phase[1].second, 0);
+}
+
 // GeneratorOptions::motion_step is the scene's Tolerances::motion_step by another route: both
 // give the same graph, and a step other than the scene's changes the motions. On the scene
 // with listed seeds, which skips the seed search.
