@@ -68,11 +68,15 @@ TEST(StressScenes, IllScaledFilesHoldExample1sSurfaces) {
   }
 }
 
-TEST(StressScenes, FarRotatedFileHoldsExample1Moved) {
-  const SceneSpec got = load_scene_file(stress_path("example1_far_rotated.yaml"));
-  const SceneSpec want = moved_scene(example(1), far_rotation());
-  testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
-  testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
+TEST(StressScenes, FarRotatedFilesHoldTheExamplesMoved) {
+  for (int n : {1, 2}) {
+    const std::string file = "example" + std::to_string(n) + "_far_rotated.yaml";
+    SCOPED_TRACE(file);
+    const SceneSpec got = load_scene_file(stress_path(file));
+    const SceneSpec want = moved_scene(example(n), far_rotation());
+    testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
+    testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
+  }
 }
 
 // Both length units in one test: three generations of Example 1 (~5 s each on one core).
@@ -189,6 +193,36 @@ TEST(StressFrames, Example1FarFromTheOriginAndRotatedHasItsStates) {
 TEST(StressFrames, Example1FarFromTheOriginAndRotated) {
   const auto& [ref, got] = far_rotated_example1();
   expect_same_graph(got, ref);
+}
+
+// Example 2 with B's frame moved as in example2_far_rotated.yaml (~11 min of CPU on two
+// threads): the same 29 CFs as Example 2's stored signature, every witness exact.
+TEST(StressFrames, Example2FarFromTheOriginAndRotatedHasItsStates) {
+  const Generated g = generate(load_scene_file(stress_path("example2_far_rotated.yaml")));
+  EXPECT_EQ(testing::signature(g.graph, g.scene).states,
+            testing::read_signature("example2").states);
+  testing::expect_witnesses_valid(g);
+}
+
+// The links too: open. Measured in session 10 (at 55b9b2c, `pcsg generate
+// scenes/stress/example2_far_rotated.yaml -j 2`, 661 s): 37 states over Example 2's 29 CFs
+// (its unjoined duplicate {(eA-f1, 1), (fA1-e1, 1)} x2 is one state here) and 147 of Example
+// 2's 149 distinct LN links: {(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)} -> {(fA2-e1, 1)} and its
+// relabelled image are missing. In Example 2 one of the two regions of that 3-contact CF
+// proves the link (slidingB+rotation+separation) and the other fails in all five variants,
+// its lens rim meeting B's rim again at step 24; here every witness of both regions fails so.
+// Not the length scale: L is B's box diagonal, 13.0158 here and 13.1720 with B rotated, but
+// Example 2 generated with L forced to 13.1720 still has all 149 links, and this scene with
+// L forced to 13.0158 still lacks the two. Feasibility from a witness is incomplete: which
+// witnesses a run holds decides this link.
+TEST(StressFrames, Example2FarFromTheOriginAndRotated) {
+  GTEST_SKIP() << "open defect (engine/generator, feasibility from one witness), measured in "
+                  "session 10: 147 of Example 2's 149 distinct links; "
+                  "{(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)} -> {(fA2-e1, 1)} and its relabelled "
+                  "image missing (every variant from every witness of both 3-contact regions "
+                  "meets a second rim crossing at step 24)";
+  const Generated g = generate(load_scene_file(stress_path("example2_far_rotated.yaml")));
+  testing::expect_stored_signature(testing::signature(g.graph, g.scene), "example2");
 }
 
 // Each face written 1e8 or 1e-8 times over: fixed by dividing each row of the Newton
