@@ -83,20 +83,26 @@ inline GraphSignature read_signature(const std::string& name) {
 }
 
 // `have` equals the stored signature `name`; on a difference the lines only one side has are
-// listed, and `have` is written to signatures/<name>.txt in the working directory (the build's
-// tests folder) to be reviewed and copied over the stored one when the change is intended.
+// listed, and `have` is written to signatures/<name>-<test>.txt in the working directory (the
+// build's tests folder; one file per test, since several tests check one signature) to be
+// reviewed and copied over the stored one when the change is intended.
 inline void expect_stored_signature(const GraphSignature& have, const std::string& name) {
   const GraphSignature want = read_signature(name);
   if (have == want) return;
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string written =
+      "signatures/" + name + "-" +
+      (test ? std::string(test->test_suite_name()) + "." + test->name() : std::string("run")) +
+      ".txt";
   auto only = [](const std::vector<std::string>& a, const std::vector<std::string>& b) {
     std::vector<std::string> out;
     std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
     return out;
   };
   std::filesystem::create_directories("signatures");
-  std::ofstream("signatures/" + name + ".txt") << signature_text(have);
+  std::ofstream(written) << signature_text(have);
   ADD_FAILURE() << "the graph differs from " << signature_file(name) << " (this run's written to "
-                << std::filesystem::absolute("signatures/" + name + ".txt").string() << ")\n"
+                << std::filesystem::absolute(written).string() << ")\n"
                 << "states only here:\n"
                 << join(only(have.states, want.states)) << "states only there:\n"
                 << join(only(want.states, have.states)) << "links only here:\n"
