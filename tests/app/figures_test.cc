@@ -125,8 +125,6 @@ using pcsg::testing::ExeRun;
 // Runs pcsg with stderr merged into what is captured.
 ExeRun run_pcsg(const std::string& args) { return pcsg::testing::run_pcsg(args, true); }
 
-std::string source(const std::string& relative) { return std::string(PCSG_SOURCE_DIR) + "/" + relative; }
-
 fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::path(::testing::TempDir()) / ("pcsg_figures_test_" + name);
   fs::remove_all(d);
@@ -134,6 +132,8 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 #if PCSG_WITH_RENDER
+
+std::string source(const std::string& relative) { return std::string(PCSG_SOURCE_DIR) + "/" + relative; }
 
 // The failed candidate of the stored Example 2 graph whose motion collides soonest.
 int cheapest_collision(const json& graph) {
