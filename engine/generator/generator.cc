@@ -944,8 +944,7 @@ RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& co
 
 StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<SeedCandidate> seeds;
-  switch_phase(Phase::Seeds);
+  std::vector<SeedCandidate> seeds;  // Phase::Seeds, the phase a Builder starts in
   if (scene_.spec.auto_seeds) {
     seeds = find_seed_candidates(scene_, counters_, options_.threads);
   } else {
