@@ -1,13 +1,15 @@
 #include "engine/contact/contact_context.h"
 
-#include <Eigen/Dense>
-#include <algorithm>
-#include <cmath>
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/math/geometry.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "engine/contact/element_geometry.h"
@@ -165,20 +167,234 @@ bool disjoint_on_face_axes(const Eigen::Matrix3d& B, const Eigen::Vector3d& T,
   return false;
 }
 
-// Whether boxes b1 and b2 (b2 placed in b1's frame by R0, T0; `reach` the sum of their
-// enclosing balls' radii) are more than `margin` apart: by their balls (beyond round-off) or
-// on a face axis of either box (FCL's slack, b1 grown by the margin).
-bool apart_by(const Eigen::Matrix3d& R0, const Eigen::Vector3d& T0, const fcl::OBBd& b1,
-              const fcl::OBBd& b2, double reach, double margin) {
-  const Eigen::Vector3d c2 = R0 * b2.To + T0;
-  const Eigen::Vector3d d = c2 - b1.To;
-  const double r = reach + margin;
-  if (d.squaredNorm() >
-      r * r * (1 + kBallRoundOff) + kBallRoundOff * (c2.squaredNorm() + b1.To.squaredNorm()))
+// Two doubles side by side (a GCC/Clang vector extension: SSE2 on x86-64): the traversals test
+// the two child pairs of a node pair at once, each lane doing a scalar test's arithmetic.
+typedef double Lanes __attribute__((vector_size(16)));
+typedef long long LaneMask __attribute__((vector_size(16)));
+
+Lanes lane_abs(Lanes x) {
+  const LaneMask sign = {INT64_MIN, INT64_MIN};
+  return reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(x) & ~sign);
+}
+
+// Boxes in lanes: a node's two children, or one box twice.
+struct BoxLanes {
+  Lanes axis[9];  // axis[3 * i + k]: component k of the box's axis i
+  Lanes centre[3];
+};
+struct BoxSizeLanes {
+  Lanes extent[3];  // half-lengths along the axes
+  Lanes ball;       // radius of a ball about the centre holding the box
+};
+
+// One solid's BVH as the traversals read it: FCL's nodes keep it behind out-of-line accessors,
+// interleaved with the RSS half of each OBBRSS, one node at a time. Here the two children of
+// a node (FCL numbers them first_child and first_child + 1, with first_child = 1, 3, 5, ...)
+// sit side by side in one block, block (first_child - 1) / 2; the root, twice, in the last.
+struct BoxTree {
+  struct Node {
+    double size = 0;      // FCL's bv.size(), for its split rule
+    int first_child = 0;  // FCL's: negative at a leaf
+    bool leaf() const { return first_child < 0; }
+  };
+  std::vector<Node> nodes;
+  std::vector<BoxLanes> boxes;  // per block, in the solid's frame
+  std::vector<BoxSizeLanes> sizes;
+  int block_of(int n) const { return n ? (n - 1) / 2 : static_cast<int>(boxes.size()) - 1; }
+  static int lane_of(int n) { return n ? (n - 1) & 1 : 0; }
+  int children(int n) const { return (nodes[n].first_child - 1) / 2; }
+  // The nodes in the lanes of block k.
+  std::pair<int, int> lanes(int k) const {
+    return k + 1 == static_cast<int>(boxes.size()) ? std::pair(0, 0)
+                                                   : std::pair(2 * k + 1, 2 * k + 2);
+  }
+};
+
+BoxTree box_tree(const Model& model) {
+  BoxTree tree;
+  const int n = model.getNumBVs();
+  tree.nodes.resize(n);
+  tree.boxes.resize((n - 1) / 2 + 1);
+  tree.sizes.resize(tree.boxes.size());
+  for (int i = 0; i < n; ++i) {
+    const fcl::BVNode<fcl::OBBRSSd>& node = model.getBV(i);
+    tree.nodes[i] = {node.bv.size(), node.first_child};
+    if (!node.isLeaf() && (node.first_child % 2 != 1 || node.first_child + 1 >= n))
+      throw std::logic_error("ContactContext: FCL's BVH does not number children in pairs");
+  }
+  for (int k = 0; k < static_cast<int>(tree.boxes.size()); ++k) {
+    const auto [n0, n1] = tree.lanes(k);
+    for (int l = 0; l < 2; ++l) {
+      const fcl::OBBd& obb = model.getBV(l ? n1 : n0).bv.obb;
+      for (int m = 0; m < 9; ++m) tree.boxes[k].axis[m][l] = obb.axis.data()[m];
+      for (int m = 0; m < 3; ++m) {
+        tree.boxes[k].centre[m][l] = obb.To[m];
+        tree.sizes[k].extent[m][l] = obb.extent[m];
+      }
+      tree.sizes[k].ball[l] = obb.extent.norm();
+    }
+  }
+  return tree;
+}
+
+// Lane `l` of `from` in both lanes.
+template <typename Boxes>
+Boxes both_lanes(const Boxes& from, int l) {
+  constexpr size_t n = sizeof(Boxes) / sizeof(Lanes);
+  const Lanes* src = reinterpret_cast<const Lanes*>(&from);
+  Boxes to;
+  Lanes* dst = reinterpret_cast<Lanes*>(&to);
+  if (l)
+    for (size_t m = 0; m < n; ++m) dst[m] = Lanes{src[m][1], src[m][1]};
+  else
+    for (size_t m = 0; m < n; ++m) dst[m] = Lanes{src[m][0], src[m][0]};
+  return to;
+}
+
+// Lane by lane, whether box a of A and box b of B (placed in A's frame) are more than `margin`
+// apart: by their balls (beyond round-off), or on a face axis of either box (the first six tests
+// of FCL's obbDisjoint, with its slack, a grown by the margin). Bit l of the result: lane l.
+int lanes_apart(const BoxLanes& a, const BoxSizeLanes& as, const BoxLanes& b,
+                const BoxSizeLanes& bs, double margin) {
+  constexpr double reps = 1e-6;  // FCL's slack on the rotation's entries
+  Lanes d[3];
+  for (int k = 0; k < 3; ++k) d[k] = b.centre[k] - a.centre[k];
+  const Lanes r = as.ball + bs.ball + margin;
+  const Lanes centres =
+      (b.centre[0] * b.centre[0] + b.centre[1] * b.centre[1] + b.centre[2] * b.centre[2]) +
+      (a.centre[0] * a.centre[0] + a.centre[1] * a.centre[1] + a.centre[2] * a.centre[2]);
+  LaneMask apart = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >
+                   r * r * (1 + kBallRoundOff) + kBallRoundOff * centres;
+  if (apart[0] && apart[1]) return 3;
+  // Rab(i, j) = a's axis i . b's axis j, Tab(i) = a's axis i . d: b placed in a's frame;
+  // FCL's slack enters as reps times the sum of the other box's extents.
+  Lanes Rab[9], Rabs[9], Tab[3];
+  for (int i = 0; i < 3; ++i) {
+    const Lanes* ai = a.axis + 3 * i;
+    Tab[i] = ai[0] * d[0] + ai[1] * d[1] + ai[2] * d[2];
+    for (int j = 0; j < 3; ++j) {
+      const Lanes* bj = b.axis + 3 * j;
+      Rab[3 * i + j] = ai[0] * bj[0] + ai[1] * bj[1] + ai[2] * bj[2];
+      Rabs[3 * i + j] = lane_abs(Rab[3 * i + j]);
+    }
+  }
+  const Lanes ea[3] = {as.extent[0] + margin, as.extent[1] + margin, as.extent[2] + margin};
+  const Lanes* eb = bs.extent;
+  const Lanes slack_a = reps * (eb[0] + eb[1] + eb[2]), slack_b = reps * (ea[0] + ea[1] + ea[2]);
+  for (int i = 0; i < 3; ++i)
+    apart |= lane_abs(Tab[i]) > ea[i] + (Rabs[3 * i] * eb[0] + Rabs[3 * i + 1] * eb[1] +
+                                         Rabs[3 * i + 2] * eb[2] + slack_a);
+  for (int j = 0; j < 3; ++j)
+    apart |= lane_abs(Rab[j] * Tab[0] + Rab[3 + j] * Tab[1] + Rab[6 + j] * Tab[2]) >
+             eb[j] + (Rabs[j] * ea[0] + Rabs[3 + j] * ea[1] + Rabs[6 + j] * ea[2] + slack_b);
+  return (apart[0] ? 1 : 0) | (apart[1] ? 2 : 0);
+}
+
+// B's boxes placed in A's frame for one query, a block when first needed. The storage is the
+// thread's and is reused by its next query: a stamp per block tells the current placements.
+class PlacedBoxes {
+ public:
+  PlacedBoxes(const Model& B, const BoxTree& tree, const Eigen::Matrix3d& R,
+              const Eigen::Vector3d& T)
+      : B_(B), tree_(tree), R_(R), T_(T) {
+    if (stamp_.size() < tree.boxes.size()) {
+      boxes_.resize(tree.boxes.size());
+      stamp_.assign(tree.boxes.size(), 0);
+    }
+    if (++query_ == 0) {  // wrapped: start over
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      query_ = 1;
+    }
+  }
+  const BoxLanes& operator[](int k) {
+    BoxLanes& p = boxes_[k];
+    if (stamp_[k] != query_) {
+      const auto [n0, n1] = tree_.lanes(k);
+      for (int l = 0; l < 2; ++l) {
+        // As FCL places a box (R * axes, R * centre + T), so that a leaf test sees its bits.
+        const fcl::OBBd& obb = B_.getBV(l ? n1 : n0).bv.obb;
+        const Eigen::Matrix3d axis = R_ * obb.axis;
+        const Eigen::Vector3d centre = R_ * obb.To + T_;
+        for (int m = 0; m < 9; ++m) p.axis[m][l] = axis.data()[m];
+        for (int m = 0; m < 3; ++m) p.centre[m][l] = centre[m];
+      }
+      stamp_[k] = query_;
+    }
+    return p;
+  }
+  // Node n's placed box as FCL's types.
+  void get(int n, Eigen::Matrix3d& axis, Eigen::Vector3d& centre) {
+    const BoxLanes& p = (*this)[tree_.block_of(n)];
+    const int l = BoxTree::lane_of(n);
+    for (int m = 0; m < 9; ++m) axis.data()[m] = p.axis[m][l];
+    for (int m = 0; m < 3; ++m) centre[m] = p.centre[m][l];
+  }
+
+ private:
+  const Model& B_;
+  const BoxTree& tree_;
+  const Eigen::Matrix3d& R_;
+  const Eigen::Vector3d& T_;
+  static thread_local std::vector<BoxLanes> boxes_;
+  static thread_local std::vector<unsigned> stamp_;
+  static thread_local unsigned query_;
+};
+thread_local std::vector<BoxLanes> PlacedBoxes::boxes_;
+thread_local std::vector<unsigned> PlacedBoxes::stamp_;
+thread_local unsigned PlacedBoxes::query_ = 0;
+
+// FCL's traversal order (collisionRecurse: depth-first, the larger box split, a leaf never,
+// left child first) over the node pairs whose boxes are not `margin` apart (lanes_apart);
+// leaf pairs go to `leaf_pair(a, b)`, which returns false to stop. Each expansion tests the two
+// child pairs at once, before they are stacked, which changes the order of no visit. With
+// `test_leaves` false, leaf pairs are handed on untested.
+template <typename LeafPair>
+bool traverse(const BoxTree& tree_A, const BoxTree& tree_B, PlacedBoxes& placed, double margin,
+              bool test_leaves, std::vector<std::pair<int, int>>& stack, LeafPair&& leaf_pair) {
+  stack.clear();
+  const int root_A = tree_A.block_of(0), root_B = tree_B.block_of(0);
+  const bool root_leaves = tree_A.nodes[0].leaf() && tree_B.nodes[0].leaf();
+  if (!(root_leaves && !test_leaves) && (lanes_apart(tree_A.boxes[root_A], tree_A.sizes[root_A],
+                                                     placed[root_B], tree_B.sizes[root_B], margin) &
+                                         1))
     return true;
-  const Eigen::Matrix3d R = b1.axis.transpose() * (R0 * b2.axis);
-  const Eigen::Vector3d T = b1.axis.transpose() * d;
-  return disjoint_on_face_axes(R, T, Eigen::Vector3d(b1.extent.array() + margin), b2.extent);
+  stack.emplace_back(0, 0);
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    const BoxTree::Node& na = tree_A.nodes[a];
+    const BoxTree::Node& nb = tree_B.nodes[b];
+    if (na.leaf() && nb.leaf()) {
+      if (!leaf_pair(a, b)) return false;
+      continue;
+    }
+    // Split the larger box (a leaf never): its children in the lanes, the other box in both.
+    const bool split_A = nb.leaf() || (!na.leaf() && na.size > nb.size);
+    int apart, c0, c1;
+    if (split_A) {
+      const int k = tree_A.children(a), kb = tree_B.block_of(b), lb = BoxTree::lane_of(b);
+      apart = lanes_apart(tree_A.boxes[k], tree_A.sizes[k], both_lanes(placed[kb], lb),
+                          both_lanes(tree_B.sizes[kb], lb), margin);
+      c0 = na.first_child;
+    } else {
+      const int k = tree_B.children(b), ka = tree_A.block_of(a), la = BoxTree::lane_of(a);
+      apart = lanes_apart(both_lanes(tree_A.boxes[ka], la), both_lanes(tree_A.sizes[ka], la),
+                          placed[k], tree_B.sizes[k], margin);
+      c0 = nb.first_child;
+    }
+    c1 = c0 + 1;
+    // Untested leaf pairs are kept whatever their boxes.
+    if (!test_leaves) {
+      const BoxTree& split = split_A ? tree_A : tree_B;
+      const bool other_leaf = split_A ? nb.leaf() : na.leaf();
+      if (other_leaf && split.nodes[c0].leaf()) apart &= ~1;
+      if (other_leaf && split.nodes[c1].leaf()) apart &= ~2;
+    }
+    // Right child below left, so that the left one's pairs come first.
+    if (!(apart & 2)) stack.emplace_back(split_A ? c1 : a, split_A ? b : c1);
+    if (!(apart & 1)) stack.emplace_back(split_A ? c0 : a, split_A ? b : c0);
+  }
+  return true;
 }
 
 // Whether all three points lie clearly on one side of the plane of triangle (p1, p2, p3): by
@@ -191,8 +407,7 @@ bool one_side_of_plane(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
   const Eigen::Vector3d n = e1.cross(e2);
   const Eigen::Vector3d r1 = q1 - p1, r2 = q2 - p1, r3 = q3 - p1;
   const double d1 = n.dot(r1), d2 = n.dot(r2), d3 = n.dot(r3);
-  const double reach = e1.norm() + e2.norm() +
-                       std::max({r1.norm(), r2.norm(), r3.norm()});
+  const double reach = e1.norm() + e2.norm() + std::max({r1.norm(), r2.norm(), r3.norm()});
   const double slack = kPlaneRoundOff * n.norm() * reach;
   return (d1 > slack && d2 > slack && d3 > slack) || (d1 < -slack && d2 < -slack && d3 < -slack);
 }
@@ -202,9 +417,9 @@ bool one_side_of_plane(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
 // cheaper tests that only reject pairs it rejects too (boxes apart on a face axis, triangles
 // apart across a plane). FCL's full test of the leaves' boxes is left out: boxes holding
 // intersecting triangles overlap, so it rejects only pairs intersect_Triangle rejects.
-bool leaf_pair_intersects(const Model& A, const Model& B, int a, int b,
-                          const Eigen::Matrix3d& R, const Eigen::Vector3d& T,
-                          const Eigen::Matrix3d& Rab, const Eigen::Vector3d& Tab) {
+bool leaf_pair_intersects(const Model& A, const Model& B, int a, int b, const Eigen::Matrix3d& R,
+                          const Eigen::Vector3d& T, const Eigen::Matrix3d& Rab,
+                          const Eigen::Vector3d& Tab) {
   const auto& na = A.getBV(a);
   const auto& nb = B.getBV(b);
   if (disjoint_on_face_axes(Rab, Tab, na.bv.obb.extent, nb.bv.obb.extent)) return false;
@@ -229,25 +444,11 @@ constexpr double kMarginRoundOff = 1e-6;
 // larger set costs more than the few full queries of a bisection it would replace.
 constexpr size_t kMaxNearbyLeaves = 20000;
 
-// The node pair's children onto a depth-first stack: the larger box is split (as FCL does),
-// a leaf never; at least one of the two is an inner node.
-void push_children(std::vector<std::pair<int, int>>& stack, int a, int b,
-                   const fcl::BVNode<fcl::OBBRSSd>& na, const fcl::BVNode<fcl::OBBRSSd>& nb) {
-  if (nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size())) {
-    stack.emplace_back(na.rightChild(), b);
-    stack.emplace_back(na.leftChild(), b);
-  } else {
-    stack.emplace_back(a, nb.rightChild());
-    stack.emplace_back(a, nb.leftChild());
-  }
-}
-
 }  // namespace
 
 struct ContactContext::Models {
   std::shared_ptr<Model> A, B;
-  // Per BVH node, the radius of a ball about its box's centre holding the box.
-  std::vector<double> ball_A, ball_B;
+  BoxTree tree_A, tree_B;
   // A ball about this point (A's frame) holds A's inflated mesh.
   Eigen::Vector3d centre_A = Eigen::Vector3d::Zero();
   double radius_A = 0;
@@ -265,14 +466,12 @@ ContactContext::ContactContext(const SceneGeometry& scene, double band)
   index_B_ = build_index(scene.B, scene.mesh_B, reach + sample_spacing(scene.B));
   models_ = std::make_unique<Models>();
   recent_reports_ = std::make_unique<ReportCache>(kRecentReports);
-  models_->A = build_model(scene.A, scene.mesh_A, delta_A,
-                           kOnSurfaceFraction * scene.mesh_A.chordal_error);
-  models_->B = build_model(scene.B, scene.mesh_B, delta_B,
-                           kOnSurfaceFraction * scene.mesh_B.chordal_error);
-  for (int i = 0; i < models_->A->getNumBVs(); ++i)
-    models_->ball_A.push_back(models_->A->getBV(i).bv.obb.extent.norm());
-  for (int i = 0; i < models_->B->getNumBVs(); ++i)
-    models_->ball_B.push_back(models_->B->getBV(i).bv.obb.extent.norm());
+  models_->A =
+      build_model(scene.A, scene.mesh_A, delta_A, kOnSurfaceFraction * scene.mesh_A.chordal_error);
+  models_->B =
+      build_model(scene.B, scene.mesh_B, delta_B, kOnSurfaceFraction * scene.mesh_B.chordal_error);
+  models_->tree_A = box_tree(*models_->A);
+  models_->tree_B = box_tree(*models_->B);
   Eigen::AlignedBox3d box_A;
   for (int i = 0; i < models_->A->num_vertices; ++i) box_A.extend(models_->A->vertices[i]);
   models_->centre_A = box_A.center();
@@ -293,71 +492,30 @@ bool ContactContext::overlapping_triangles(const Pose& X_BA,
   // intersect has a common point in every box above them, so no test used here separates
   // their ancestors), while each leaf pair gets FCL's own tests. Each of B's boxes is placed
   // in A's frame once per query instead of once per box test; a pair of boxes whose
-  // enclosing balls lie apart (by more than round-off) is skipped before any box test; and
-  // inner pairs are tested on the boxes' face axes only: nearly all pairs that reach the box
-  // test overlap, and the nine edge-edge axes would cost more than the few pairs they
-  // separate.
+  // enclosing balls lie apart (by more than round-off) is skipped before any box test; inner
+  // pairs are tested on the boxes' face axes only: nearly all pairs that reach the box test
+  // overlap, and the nine edge-edge axes would cost more than the few pairs they separate;
+  // and the two child pairs of a pair are tested together, in the two lanes of SSE2.
   Eigen::Matrix3d R;
   Eigen::Vector3d T;
   relative_transform(X_BA, R, T);
   const Model& A = *models_->A;
   const Model& B = *models_->B;
-  const std::vector<double>& ball_A = models_->ball_A;
-  const std::vector<double>& ball_B = models_->ball_B;
-  struct Placed {
-    Eigen::Matrix3d axis;  // R * box axes
-    Eigen::Vector3d To;    // R * centre + T
-  };
-  thread_local std::vector<Placed> placed;
-  thread_local std::vector<unsigned> placed_at;
-  thread_local unsigned query = 0;
-  if (placed_at.size() < static_cast<size_t>(B.getNumBVs())) {
-    placed.resize(B.getNumBVs());
-    placed_at.assign(B.getNumBVs(), 0);
-  }
-  if (++query == 0) {  // wrapped: start over
-    std::fill(placed_at.begin(), placed_at.end(), 0);
-    query = 1;
-  }
-  auto place = [&](int b) -> const Placed& {
-    Placed& p = placed[b];
-    if (placed_at[b] != query) {
-      const fcl::OBBd& obb = B.getBV(b).bv.obb;
-      p.axis = R * obb.axis;
-      p.To = R * obb.To + T;
-      placed_at[b] = query;
-    }
-    return p;
-  };
+  PlacedBoxes placed(B, models_->tree_B, R, T);
   pairs.clear();
   thread_local std::vector<std::pair<int, int>> stack;
-  stack.assign(1, {0, 0});
-  while (!stack.empty()) {
-    const auto [a, b] = stack.back();
-    stack.pop_back();
-    const auto& na = A.getBV(a);
-    const auto& nb = B.getBV(b);
-    const Placed& pb = place(b);
-    const fcl::OBBd& oa = na.bv.obb;
-    const Eigen::Vector3d d = pb.To - oa.To;
-    const double reach = ball_A[a] + ball_B[b];
-    if (d.squaredNorm() > reach * reach * (1 + kBallRoundOff) +
-                              kBallRoundOff * (pb.To.squaredNorm() + oa.To.squaredNorm()))
-      continue;
-    const bool la = na.isLeaf(), lb = nb.isLeaf();
-    const Eigen::Matrix3d Rab = oa.axis.transpose() * pb.axis;
-    const Eigen::Vector3d Tab = d.transpose() * oa.axis;
-    if (la && lb) {
-      if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) continue;
-      pairs.emplace_back(na.primitiveId(), nb.primitiveId());
-      if (static_cast<int>(pairs.size()) >= max_pairs) return false;
-      continue;
-    }
-    // FCL's overlap(R, T, OBB, OBB) on its face axes, with B's box placed once per query.
-    if (disjoint_on_face_axes(Rab, Tab, oa.extent, nb.bv.obb.extent)) continue;
-    push_children(stack, a, b, na, nb);
-  }
-  return true;
+  Eigen::Matrix3d axis_b;
+  Eigen::Vector3d centre_b;
+  return traverse(models_->tree_A, models_->tree_B, placed, 0, true, stack, [&](int a, int b) {
+    // FCL's leaf test, given Rab and Tab as FCL forms them from the placed boxes.
+    const fcl::OBBd& oa = A.getBV(a).bv.obb;
+    placed.get(b, axis_b, centre_b);
+    const Eigen::Matrix3d Rab = oa.axis.transpose() * axis_b;
+    const Eigen::Vector3d Tab = (centre_b - oa.To).transpose() * oa.axis;
+    if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) return true;
+    pairs.emplace_back(A.getBV(a).primitiveId(), B.getBV(b).primitiveId());
+    return static_cast<int>(pairs.size()) < max_pairs;
+  });
 }
 
 bool ContactContext::overlapping_triangles_by_fcl(const Pose& X_BA,
@@ -397,31 +555,19 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
   const double grown = margin * (1 + kMarginRoundOff);
   const Model& A = *models_->A;
   const Model& B = *models_->B;
-  // Depth-first over node pairs, splitting the larger box (as FCL does).
-  std::vector<std::pair<int, int>> stack = {{0, 0}};
-  while (!stack.empty()) {
-    const auto [a, b] = stack.back();
-    stack.pop_back();
-    const auto& na = A.getBV(a);
-    const auto& nb = B.getBV(b);
-    const bool leaves = na.isLeaf() && nb.isLeaf();
-    // Inner pairs: the looser ball and face-axis tests (as in overlapping_triangles), which
-    // only let more pairs through to the leaves; leaf pairs: the full grown box test.
-    if (leaves ? !overlap_within(R, T, na.bv.obb, nb.bv.obb, grown)
-               : apart_by(R, T, na.bv.obb, nb.bv.obb, models_->ball_A[a] + models_->ball_B[b],
-                          grown))
-      continue;
-    if (leaves) {
-      if (out.leaves.size() >= kMaxNearbyLeaves) {
-        out.complete = false;
-        out.leaves.clear();
-        return out;
-      }
-      out.leaves.emplace_back(a, b);
-    } else {
-      push_children(stack, a, b, na, nb);
-    }
-  }
+  PlacedBoxes placed(B, models_->tree_B, R, T);
+  // FCL's order over node pairs. Inner pairs: the looser ball and face-axis tests (as in
+  // overlapping_triangles), which only let more pairs through to the leaves; leaf pairs: the
+  // full grown box test.
+  std::vector<std::pair<int, int>> stack;
+  out.complete =
+      traverse(models_->tree_A, models_->tree_B, placed, grown, false, stack, [&](int a, int b) {
+        if (!overlap_within(R, T, A.getBV(a).bv.obb, B.getBV(b).bv.obb, grown)) return true;
+        if (out.leaves.size() >= kMaxNearbyLeaves) return false;
+        out.leaves.emplace_back(a, b);
+        return true;
+      });
+  if (!out.complete) out.leaves.clear();
   return out;
 }
 

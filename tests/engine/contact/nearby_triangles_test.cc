@@ -5,10 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
+#include <string>
 
 #include "engine/contact/contact.h"
 #include "engine/contact/contact_context.h"
+#include "engine/geometry/scene_geometry.h"
+#include "engine/scene/scene.h"
 #include "tests/engine/contact/test_shapes.h"
 
 namespace pcsg {
@@ -82,8 +87,8 @@ TEST(NearbyTriangles, GiveTheFullQuerysPairsEverywhereWithinTheMargin) {
   EXPECT_GE(nonempty, 12);
   // Outside the margin the nearby pairs do not answer.
   std::vector<std::pair<int, int>> pairs;
-  EXPECT_FALSE(ctx.overlapping_triangles_near(pose_near(ctx, X, margin, 1.5, rng), near, pairs,
-                                              1000000));
+  EXPECT_FALSE(
+      ctx.overlapping_triangles_near(pose_near(ctx, X, margin, 1.5, rng), near, pairs, 1000000));
 }
 
 // Narrowing filters the wide set by the leaves' boxes only, so it may keep a pair whose
@@ -158,12 +163,11 @@ TEST(OverlappingTriangles, ListExactlyFclsPairsAlongAMotion) {
     const double s = k / 40.0;
     Pose Y = X;
     Y.position += Eigen::Vector3d(0.3 * s * L, 0, (0.04 * std::sin(2 * M_PI * s) - 0.01) * L);
-    Y.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.2 * s, Eigen::Vector3d::UnitX())) *
-                   X.quaternion;
+    Y.quaternion =
+        Eigen::Quaterniond(Eigen::AngleAxisd(0.2 * s, Eigen::Vector3d::UnitX())) * X.quaternion;
     poses.push_back(Y);
   }
-  for (int k = 0; k < 12; ++k)
-    poses.push_back(pose_near(ctx, X, 0.05 * L, (k % 4 + 1) / 4.0, rng));
+  for (int k = 0; k < 12; ++k) poses.push_back(pose_near(ctx, X, 0.05 * L, (k % 4 + 1) / 4.0, rng));
   // And lifted off the dish.
   for (int k = 1; k <= 3; ++k) {
     Pose Y = poses.back();
@@ -191,6 +195,69 @@ TEST(OverlappingTriangles, ListExactlyFclsPairsAlongAMotion) {
   EXPECT_GE(nonempty, 20);
   EXPECT_GE(penetrating, 5);
   EXPECT_LT(nonempty, static_cast<int>(poses.size()));
+}
+
+// The same on the paper's examples, about every state of their stored graphs
+// (tests/data/graphs/): each witness pose, moved by 1e-5 to 1e-2 of the scene size in a random
+// direction and pressed towards B's origin (into penetration), so that the traversal meets the
+// nearly parallel sheets of a contact, wider overlaps and separation. The nearby pairs gathered
+// at each witness answer like full queries within their margin.
+TEST(OverlappingTriangles, ListExactlyFclsPairsAboutTheExamplesStates) {
+  for (const std::string name : {"example1", "example2"}) {
+    const SceneGeometry scene = build_scene_geometry(
+        load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/" + name + ".yaml"));
+    const ContactContext ctx(scene);
+    const double L = scene.tol.length_scale;
+    std::ifstream in(std::string(PCSG_SOURCE_DIR) + "/tests/data/graphs/" + name + ".json");
+    const nlohmann::json graph = nlohmann::json::parse(in);
+    std::mt19937 rng(17);
+    std::normal_distribution<double> n(0, 1);
+    int compared = 0, nonempty = 0, penetrating = 0;
+    for (const nlohmann::json& state : graph.at("states")) {
+      const auto& p = state.at("pose").at("position");
+      const auto& q = state.at("pose").at("quaternion");
+      Pose X;
+      X.position = Eigen::Vector3d(p[0], p[1], p[2]);
+      X.quaternion = Eigen::Quaterniond(q[0].get<double>(), q[1], q[2], q[3]).normalized();
+      std::vector<Pose> poses = {X};
+      for (double s : {1e-5, 1e-4, 1e-3, 1e-2}) {
+        const Eigen::Vector3d v = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+        const Eigen::Vector3d w = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+        poses.push_back(X.displaced(s * L * v, s * w, X.position));
+        poses.push_back(
+            X.displaced(-s * L * X.position.normalized(), Eigen::Vector3d::Zero(), X.position));
+      }
+      for (const Pose& Y : poses) {
+        std::vector<std::pair<int, int>> ours, fcl;
+        ASSERT_TRUE(ctx.overlapping_triangles(Y, ours, 1000000));
+        ASSERT_TRUE(ctx.overlapping_triangles_by_fcl(Y, fcl, 1000000));
+        EXPECT_EQ(ours, fcl) << name << " pose " << compared;
+        if (fcl.size() > 4) {
+          std::vector<std::pair<int, int>> capped_ours, capped_fcl;
+          EXPECT_FALSE(ctx.overlapping_triangles(Y, capped_ours, 4));
+          EXPECT_FALSE(ctx.overlapping_triangles_by_fcl(Y, capped_fcl, 4));
+          EXPECT_EQ(capped_ours, capped_fcl) << name << " pose " << compared;
+        }
+        ++compared;
+        nonempty += !fcl.empty();
+        penetrating += detect_contacts(ctx, Y).penetrating();
+      }
+      const double margin = scene.tol.motion_step;
+      const NearbyTriangles near = ctx.nearby_triangles(X, margin);
+      if (!near.complete) continue;
+      for (int k = 0; k < 3; ++k) {
+        const Pose Y = pose_near(ctx, X, margin, (k + 1) / 3.0, rng);
+        std::vector<std::pair<int, int>> full, filtered;
+        ASSERT_TRUE(ctx.overlapping_triangles(Y, full, 1000000));
+        ASSERT_TRUE(ctx.overlapping_triangles_near(Y, near, filtered, 1000000));
+        EXPECT_EQ(sorted(full), sorted(filtered)) << name << " near pose " << k;
+      }
+    }
+    // Contacts (the witnesses), penetrations and separations are all among the poses.
+    EXPECT_GE(nonempty, compared / 2) << name;
+    EXPECT_GE(penetrating, 5) << name;
+    EXPECT_LT(nonempty, compared) << name;
+  }
 }
 
 }  // namespace
