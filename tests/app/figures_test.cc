@@ -133,7 +133,9 @@ fs::path fresh_dir(const std::string& name) {
 
 #if PCSG_WITH_RENDER
 
-std::string source(const std::string& relative) { return std::string(PCSG_SOURCE_DIR) + "/" + relative; }
+std::string source(const std::string& relative) {
+  return std::string(PCSG_SOURCE_DIR) + "/" + relative;
+}
 
 // The failed candidate of the stored Example 2 graph whose motion collides soonest.
 int cheapest_collision(const json& graph) {
