@@ -115,6 +115,22 @@ TEST(Bench, PrintsTheTablesBesideThePapersTimes) {
   EXPECT_NE(r.out.find("| collision queries"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| exact contact solves"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| rendered frames"), std::string::npos) << r.out;
+  // the scene's row ends with its peak memory, measured in a process of its own: a small
+  // scene's meshes and graph take some MB, far below issue 5's 200 MB
+  EXPECT_NE(r.out.find("| peak memory (MB) |"), std::string::npos) << r.out;
+  const size_t row = r.out.find("\n| ", r.out.find("|---|"));
+  ASSERT_NE(row, std::string::npos) << r.out;
+  const std::string line = r.out.substr(row + 1, r.out.find('\n', row + 1) - row - 1);
+  const size_t last = line.rfind('|', line.size() - 2);
+  const double peak_mb = std::stod(line.substr(last + 1));
+  EXPECT_GT(peak_mb, 2.0) << line;
+  EXPECT_LT(peak_mb, 200.0) << line;
+}
+
+TEST(Bench, NamesAMissingSceneFile) {
+  const ExeRun r = run_pcsg("bench --scene /nonexistent/scene.yaml -n 1");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.out.find("/nonexistent/scene.yaml"), std::string::npos) << r.out;
 }
 
 }  // namespace
