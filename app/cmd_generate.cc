@@ -24,6 +24,13 @@ class ProgressLine : public GeneratorListener {
                  level, done, total, g.states.size(), g.links.size());
     std::fflush(stderr);
   }
+  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
+                         int total) override {
+    if (!enabled_) return;
+    std::fprintf(stderr, "\rpcsg generate: %s, %d/%d, %zu states, %zu links   ", phase.c_str(),
+                 done, total, g.states.size(), g.links.size());
+    std::fflush(stderr);
+  }
   void finish() const {
     if (enabled_) std::fprintf(stderr, "\n");
   }

@@ -41,6 +41,14 @@ class Progress : public GeneratorListener {
                  g.states.size());
     std::fflush(stderr);
   }
+  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
+                         int total) override {
+    if (!enabled_) return;
+    std::fprintf(stderr, "\rpcsg sweep: run %d/%d (step %g L, mesh %g L): %s, %d/%d, %zu states   ",
+                 run_, runs_, level_.motion_step, level_.mesh_chordal_error, phase.c_str(), done,
+                 total, g.states.size());
+    std::fflush(stderr);
+  }
 
  private:
   bool enabled_;

@@ -79,6 +79,10 @@ class Progress {
       stage = "stored graph";
     } else if (s.finished) {
       stage = "generated";
+    } else if (!s.progress.phase.empty()) {
+      stage = "generating: " + s.progress.phase + ", " + std::to_string(s.progress.done) + "/" +
+              std::to_string(s.progress.total) + ", " + std::to_string(s.progress.states) +
+              " states";
     } else {
       stage = "generating: level " + std::to_string(s.progress.level) + ", candidate " +
               std::to_string(s.progress.done) + "/" + std::to_string(s.progress.total) + ", " +

@@ -6,6 +6,7 @@
 // consumer is. Header-only (engine types only), so that tests/app can check it directly.
 #include <atomic>
 #include <exception>
+#include <string>
 #include <variant>
 
 #include "app/render/bounded_queue.h"
@@ -24,6 +25,7 @@ struct CandidateTried {
 struct GenerationProgress {
   int level = 0, done = 0, total = 0;
   std::size_t states = 0, links = 0;
+  std::string phase;  // a phase after the BFS levels (then `done` counts its steps), or empty
 };
 struct GraphFinished {
   StateGraph graph;
@@ -47,7 +49,11 @@ class GraphEventStream final : public GeneratorListener {
     push(std::move(e));
   }
   void on_progress(const StateGraph& graph, int level, int done, int total) override {
-    push(GenerationProgress{level, done, total, graph.states.size(), graph.links.size()});
+    push(GenerationProgress{level, done, total, graph.states.size(), graph.links.size(), {}});
+  }
+  void on_phase_progress(const StateGraph& graph, const std::string& phase, int done,
+                         int total) override {
+    push(GenerationProgress{0, done, total, graph.states.size(), graph.links.size(), phase});
   }
   void push(GraphEvent event) {
     if (!queue_.push(std::move(event))) cancel_ = true;

@@ -360,6 +360,8 @@ class Builder {
   // from one point of a region may succeed from another); each new state found is grown.
   // Repeats until nothing new is found.
   void retry_from_other_witnesses();
+  // Tells the listener how far a phase after the BFS levels has come: `done` of `total` units.
+  void report_phase(Phase p, const char* unit, int done, int total);
   // The motions retry_from_other_witnesses would try as the graph stands, run on the worker
   // threads; keyed by (state, witness, CF). Empty with one thread.
   std::map<std::tuple<int, int, ContactFormation>, TryResult> try_retries_ahead();
@@ -637,6 +639,7 @@ void Builder::join_duplicate_states() {
   PhaseScope phase(*this, Phase::Identity);
   const int n = static_cast<int>(graph_.states.size());
   for (int i = 0; i < n && !cancelled(); ++i) {
+    report_phase(Phase::Identity, "states", i, n);
     for (int j = i + 1; j < n; ++j) {
       const State &si = graph_.states[i], &sj = graph_.states[j];
       if (!(si.cf == sj.cf) || signatures_[i] != signatures_[j] ||
@@ -757,6 +760,12 @@ void Builder::merge_united_states() {
   graph_.links = std::move(links);
 }
 
+void Builder::report_phase(Phase p, const char* unit, int done, int total) {
+  if (listener_)
+    listener_->on_phase_progress(
+        graph_, std::string(kPhaseNames[static_cast<int>(p)]) + " (" + unit + ")", done, total);
+}
+
 void Builder::retry_from_other_witnesses() {
   PhaseScope phase(*this, Phase::Retries);
   for (bool found_new = true; found_new && !cancelled();) {
@@ -770,6 +779,8 @@ void Builder::retry_from_other_witnesses() {
     std::map<std::tuple<int, int, ContactFormation>, TryResult> ahead =
         try_retries_ahead();
     for (size_t id = 0; id < graph_.states.size() && !cancelled(); ++id) {
+      report_phase(Phase::Retries, "states", static_cast<int>(id),
+                   static_cast<int>(graph_.states.size()));
       for (size_t k = 1; k < members_[id].size(); ++k) {
         State from = graph_.states[id];
         from.pose = members_[id][k].pose;
@@ -830,8 +841,9 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
             {static_cast<int>(id), static_cast<int>(k), std::move(h), std::move(wanted)});
       }
   std::vector<TryResult> results(jobs.size());
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
+  std::atomic<size_t> next{0}, done{0};
+  // Only the calling thread reports (listeners are called from it alone).
+  auto worker = [&](bool reports) {
     for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
       if (cancelled()) break;
       State from = graph_.states[jobs[j].id];
@@ -839,14 +851,18 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
       from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
       results[j] =
           try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation, &jobs[j].wanted);
+      const size_t finished = ++done;
+      if (reports)
+        report_phase(Phase::Retries, "motions run ahead", static_cast<int>(finished),
+                     static_cast<int>(jobs.size()));
     }
   };
   const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
   // One thread: nothing to run ahead, the walk runs each motion it needs (and only those).
   if (threads < 2) return {};
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, false);
+  worker(true);
   for (auto& t : pool) t.join();
   std::map<std::tuple<int, int, ContactFormation>, TryResult> out;
   if (cancelled()) return out;
@@ -887,6 +903,7 @@ void Builder::retry_missing_links() {
   PhaseScope phase(*this, Phase::MissingLinks);
   const int n = static_cast<int>(graph_.states.size());
   for (int id = 0; id < n && !cancelled(); ++id) {
+    report_phase(Phase::MissingLinks, "states", id, n);
     for (const Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts)) {
       std::vector<int> targets;
       for (const State& t : graph_.states)

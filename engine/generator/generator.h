@@ -7,6 +7,7 @@
 // of the scene, the state and the hypothesis) and merged in a fixed order, so 1 or N threads
 // give the same graph.
 #include <atomic>
+#include <string>
 
 #include "engine/generator/graph.h"
 #include "engine/generator/seeds.h"
@@ -41,6 +42,13 @@ class GeneratorListener {
   // `done` of `total` candidates of the current BFS level are tried.
   virtual void on_progress(const StateGraph& graph, int level, int done, int total) {
     (void)graph, (void)level, (void)done, (void)total;
+  }
+  // Progress through a long phase after the BFS levels: its name as in
+  // GraphStats::queries_by_phase and the unit counted ("retries from other witnesses
+  // (states)", "... (motions run ahead)"): `done` of `total` units.
+  virtual void on_phase_progress(const StateGraph& graph, const std::string& phase, int done,
+                                 int total) {
+    (void)graph, (void)phase, (void)done, (void)total;
   }
 };
 

@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
 
 #include "engine/contact/contact.h"
 #include "engine/generator/graph_io.h"
@@ -125,6 +129,43 @@ TEST(Generator, QueriesByPhaseAddUpToTheTotal) {
   // the seed search and the motions of its three states both ask
   EXPECT_GT(g.graph.stats.queries_by_phase[0].second, 0);
   EXPECT_GT(g.graph.stats.queries_by_phase[1].second, 0);
+}
+
+// The phases after the BFS levels report their progress (a long Example 2 run otherwise shows
+// a still progress line for minutes): each names its phase and unit, counts up within
+// [0, total], and the retries report from the calling thread, with and without worker threads.
+// On Example 1 (~7 s a run), whose retries have motions to run ahead on a second thread.
+TEST(Generator, PhasesAfterTheLevelsReportTheirProgress) {
+  struct Recorder : GeneratorListener {
+    std::thread::id caller = std::this_thread::get_id();
+    std::vector<std::tuple<std::string, int, int>> seen;
+    bool other_thread = false;
+    void on_phase_progress(const StateGraph&, const std::string& phase, int done,
+                           int total) override {
+      other_thread = other_thread || std::this_thread::get_id() != caller;
+      seen.emplace_back(phase, done, total);
+    }
+  };
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(testing::scene_path("example1.yaml")));
+  for (int threads : {1, 2}) {
+    Recorder r;
+    GeneratorOptions opt;
+    opt.threads = threads;
+    generate_graph(scene, opt, &r);
+    EXPECT_FALSE(r.other_thread) << threads << " threads";
+    std::set<std::string> phases;
+    for (const auto& [phase, done, total] : r.seen) {
+      phases.insert(phase);
+      EXPECT_GE(done, 0) << phase;
+      EXPECT_LE(done, total) << phase;
+    }
+    EXPECT_TRUE(phases.count("retries from other witnesses (states)")) << threads << " threads";
+    EXPECT_TRUE(phases.count("missing-link retries (states)")) << threads << " threads";
+    EXPECT_TRUE(phases.count("state identity (states)")) << threads << " threads";
+    EXPECT_EQ(phases.count("retries from other witnesses (motions run ahead)"),
+              threads > 1 ? 1u : 0u);
+  }
 }
 
 // GeneratorOptions::motion_step is the scene's Tolerances::motion_step by another route: both
