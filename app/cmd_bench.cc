@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "app/command.h"
@@ -172,6 +173,26 @@ Throughput measure_throughput(const SceneGeometry& scene, const StateGraph& grap
   return out;
 }
 
+// The progress line of one run: which scene and run, then the generator's own progress.
+class RunProgress : public GeneratorListener {
+ public:
+  explicit RunProgress(std::string run) : run_(std::move(run)) {}
+  void on_progress(const StateGraph& g, int level, int done, int total) override {
+    std::fprintf(stderr, "\rpcsg bench: %s: level %d, candidate %d/%d, %zu states   ", run_.c_str(),
+                 level, done, total, g.states.size());
+    std::fflush(stderr);
+  }
+  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
+                         int total) override {
+    std::fprintf(stderr, "\rpcsg bench: %s: %s, %d/%d, %zu states   ", run_.c_str(), phase.c_str(),
+                 done, total, g.states.size());
+    std::fflush(stderr);
+  }
+
+ private:
+  std::string run_;
+};
+
 // One scene's runs (and, for the first scene, the throughput), written to `out` as lines of
 // "key value" for the parent to read: the child's own peak memory is then the scene's.
 void bench_scene(const Args& a, const std::string& path, bool first, std::ostream& out) {
@@ -181,10 +202,9 @@ void bench_scene(const Args& a, const std::string& path, bool first, std::ostrea
   StateGraph first_graph;
   out << "name " << scene.spec.name << "\n";
   for (int i = 0; i < a.repeat; ++i) {
-    std::fprintf(stderr, "\rpcsg bench: %s, run %d/%d   ",
-                 std::filesystem::path(path).filename().c_str(), i + 1, a.repeat);
-    std::fflush(stderr);
-    StateGraph g = generate_graph(scene, opt);
+    RunProgress progress(std::filesystem::path(path).filename().string() + ", run " +
+                         std::to_string(i + 1) + "/" + std::to_string(a.repeat));
+    StateGraph g = generate_graph(scene, opt, &progress);
     out << "seconds " << fmt("%.17g", g.stats.seconds) << "\n";
     out << "states " << g.states.size() << "\n";
     out << "queries " << g.stats.collision_queries << "\n";

@@ -125,6 +125,10 @@ TEST(Bench, PrintsTheTablesBesideThePapersTimes) {
   const double peak_mb = std::stod(line.substr(last + 1));
   EXPECT_GT(peak_mb, 2.0) << line;
   EXPECT_LT(peak_mb, 200.0) << line;
+  // a run shows the generator's progress on stderr (merged here), not only its number
+  EXPECT_NE(r.out.find("pcsg bench: weak_edge_sine_0.1.yaml, run 1/1: level 0, candidate"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST(Bench, NamesAMissingSceneFile) {
