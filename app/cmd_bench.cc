@@ -4,7 +4,6 @@
 // of: collision queries (detect_contacts), exact contact solves (solve_pair) and, when built
 // with the renderer, frames of 1280x960 per second. Each scene runs in a child process of its
 // own, so that its peak memory is its own (issue 5's target: under 200 MB).
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "app/command.h"
+#include "app/progress_line.h"
 #include "engine/contact/contact.h"
 #include "engine/core/error.h"
 #include "engine/generator/generator.h"
@@ -173,26 +173,6 @@ Throughput measure_throughput(const SceneGeometry& scene, const StateGraph& grap
   return out;
 }
 
-// The progress line of one run: which scene and run, then the generator's own progress.
-class RunProgress : public GeneratorListener {
- public:
-  explicit RunProgress(std::string run) : run_(std::move(run)) {}
-  void on_progress(const StateGraph& g, int level, int done, int total) override {
-    std::fprintf(stderr, "\rpcsg bench: %s: level %d, candidate %d/%d, %zu states   ", run_.c_str(),
-                 level, done, total, g.states.size());
-    std::fflush(stderr);
-  }
-  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
-                         int total) override {
-    std::fprintf(stderr, "\rpcsg bench: %s: %s, %d/%d, %zu states   ", run_.c_str(), phase.c_str(),
-                 done, total, g.states.size());
-    std::fflush(stderr);
-  }
-
- private:
-  std::string run_;
-};
-
 // One scene's runs (and, for the first scene, the throughput), written to `out` as lines of
 // "key value" for the parent to read: the child's own peak memory is then the scene's.
 void bench_scene(const Args& a, const std::string& path, bool first, std::ostream& out) {
@@ -202,8 +182,8 @@ void bench_scene(const Args& a, const std::string& path, bool first, std::ostrea
   StateGraph first_graph;
   out << "name " << scene.spec.name << "\n";
   for (int i = 0; i < a.repeat; ++i) {
-    RunProgress progress(std::filesystem::path(path).filename().string() + ", run " +
-                         std::to_string(i + 1) + "/" + std::to_string(a.repeat));
+    ProgressLine progress("pcsg bench: " + std::filesystem::path(path).filename().string() +
+                          ", run " + std::to_string(i + 1) + "/" + std::to_string(a.repeat));
     StateGraph g = generate_graph(scene, opt, &progress);
     out << "seconds " << fmt("%.17g", g.stats.seconds) << "\n";
     out << "states " << g.states.size() << "\n";

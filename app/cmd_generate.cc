@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "app/command.h"
+#include "app/progress_line.h"
 #include "engine/core/error.h"
 #include "engine/generator/generator.h"
 #include "engine/generator/graph_io.h"
@@ -13,31 +14,6 @@
 
 namespace pcsg::app {
 namespace {
-
-// A single progress line on stderr, rewritten in place.
-class ProgressLine : public GeneratorListener {
- public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
-  void on_progress(const StateGraph& g, int level, int done, int total) override {
-    if (!enabled_) return;
-    std::fprintf(stderr, "\rpcsg generate: level %d, candidate %d/%d, %zu states, %zu links   ",
-                 level, done, total, g.states.size(), g.links.size());
-    std::fflush(stderr);
-  }
-  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
-                         int total) override {
-    if (!enabled_) return;
-    std::fprintf(stderr, "\rpcsg generate: %s, %d/%d, %zu states, %zu links   ", phase.c_str(),
-                 done, total, g.states.size(), g.links.size());
-    std::fflush(stderr);
-  }
-  void finish() const {
-    if (enabled_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  bool enabled_;
-};
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream f(p, std::ios::binary);
@@ -58,7 +34,7 @@ void run(const Args& a) {
   const SceneGeometry scene = build_scene_geometry(spec);
   GeneratorOptions opt;
   opt.threads = a.threads;
-  ProgressLine progress(!a.quiet);
+  ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
   progress.finish();
   std::filesystem::create_directories(a.out);

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "app/command.h"
+#include "app/progress_line.h"
 #include "app/sweep_report.h"
 #include "engine/core/error.h"
 
@@ -26,34 +27,6 @@ struct Args {
   std::string vary = "both";
   int threads = 1;
   bool quiet = false;
-};
-
-class Progress : public GeneratorListener {
- public:
-  Progress(bool enabled, int run, int runs, const SweepLevel& l)
-      : enabled_(enabled), run_(run), runs_(runs), level_(l) {}
-  void on_progress(const StateGraph& g, int level, int done, int total) override {
-    if (!enabled_) return;
-    std::fprintf(stderr,
-                 "\rpcsg sweep: run %d/%d (step %g L, mesh %g L): level %d, candidate %d/%d, "
-                 "%zu states   ",
-                 run_, runs_, level_.motion_step, level_.mesh_chordal_error, level, done, total,
-                 g.states.size());
-    std::fflush(stderr);
-  }
-  void on_phase_progress(const StateGraph& g, const std::string& phase, int done,
-                         int total) override {
-    if (!enabled_) return;
-    std::fprintf(stderr, "\rpcsg sweep: run %d/%d (step %g L, mesh %g L): %s, %d/%d, %zu states   ",
-                 run_, runs_, level_.motion_step, level_.mesh_chordal_error, phase.c_str(), done,
-                 total, g.states.size());
-    std::fflush(stderr);
-  }
-
- private:
-  bool enabled_;
-  int run_, runs_;
-  SweepLevel level_;
 };
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
@@ -73,14 +46,15 @@ void run(const Args& a) {
   report.scene_path = a.scene;
   report.threads = a.threads;
   for (size_t i = 0; i < levels.size(); ++i) {
-    Progress progress(!a.quiet, static_cast<int>(i + 1), static_cast<int>(levels.size()),
-                      levels[i]);
+    char run[128];
+    std::snprintf(run, sizeof run, "pcsg sweep: run %zu/%zu (step %g L, mesh %g L)", i + 1,
+                  levels.size(), levels[i].motion_step, levels[i].mesh_chordal_error);
+    ProgressLine progress(run, !a.quiet);
     report.runs.push_back(run_sweep_level(spec, levels[i], a.threads, &progress));
     const SweepRun& r = report.runs.back();
     if (!a.quiet)
-      std::fprintf(stderr, "\rpcsg sweep: run %zu/%zu (step %g L, mesh %g L): %d states, %d links, "
-                   "%.2f s%30s\n", i + 1, levels.size(), r.level.motion_step,
-                   r.level.mesh_chordal_error, r.states, r.links, r.total_seconds(), "");
+      std::fprintf(stderr, "\r%s: %d states, %d links, %.2f s%30s\n", run, r.states, r.links,
+                   r.total_seconds(), "");
   }
   // the reference: the finest run (smallest step, then smallest mesh error)
   report.reference = 0;
