@@ -1,6 +1,7 @@
 #include "app/render/figure_pipeline.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <thread>
 
 namespace pcsg::app {
@@ -40,7 +41,10 @@ void stream_stored(const SceneGeometry& scene, StateGraph graph, BoundedQueue<Gr
 bool wanted(const CandidateTried& c, const PipelineOptions& o) {
   if (!o.transitions) return false;
   if (o.failed_only && c.candidate.feasible) return false;
-  return o.candidates.empty() || o.candidates.count(c.index) > 0;
+  if (!o.candidates.empty()) return o.candidates.count(c.index) > 0;
+  // No motion was run for it (a CF no configuration has, convex_support.h, or no start was
+  // CF-compliant): nothing to draw unless asked for by number (then its replay says why).
+  return c.candidate.attempts > 0;
 }
 
 // Replays one candidate and streams its frames; false when the consumer has stopped.
@@ -51,6 +55,7 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   const State from = candidate_start(scene, c.from, c.candidate);
   const MotionOutcome outcome =
       replay_candidate(scene, c.from, c.candidate, [&](const MotionFrame& f) { frames.push_back(f); });
+  if (frames.empty()) throw std::runtime_error(outcome.reason);
   // a motion that stops because a kept contact left its elements reports its last frame as a
   // "collision" without elements (default ids): keep only the elements there are
   for (MotionFrame& f : frames) {

@@ -12,6 +12,7 @@
 #include <thread>
 #include <tuple>
 
+#include "engine/contact/convex_support.h"
 #include "engine/generator/cf_parameter_path.h"
 #include "engine/generator/hypothesis.h"
 #include "engine/generator/motion_drive.h"
@@ -242,12 +243,21 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
   MotionStarts starts(scene, s, h);
   std::map<std::tuple<size_t, size_t, size_t>, MotionOutcome> runs;
   const bool signed_target = r.wanted.size() > 1 || !r.wanted.front().empty();
+  // No configuration has this CF (convex_support.h): recorded, no motion run.
+  const std::optional<PtcCount> lone = lone_contact_pair(scene, h.cf);
   for (const RegionSignature& sig : r.wanted) {
     Reached out;
     Candidate& c = out.candidate;
     c.from = s.id;
     c.cf = h.cf;
     if (signed_target) c.crossing = signature_text(scene, sig);
+    if (lone) {
+      c.reason = "no configuration has this CF: " + element_pair_name(scene, lone->a, lone->b) +
+                 " join convex sets, one strictly convex, so where they touch the objects "
+                 "touch nowhere else";
+      r.targets.push_back(std::move(out));
+      continue;
+    }
     std::string reasons;
     auto note = [&](const std::string& why) {
       if (!reasons.empty()) reasons += "; ";
@@ -542,6 +552,12 @@ void Builder::grow(int seed_id) {
     std::vector<Probe> probes;
     if (options_.probe_upward)
       for (int id : frontier) {
+        // A state with a contact that must be the only one has no state above it
+        // (convex_support.h): a probe keeping that contact can meet no other.
+        const auto& held = graph_.states[id].cf.entries();
+        if (std::any_of(held.begin(), held.end(),
+                        [&](const PtcCount& e) { return lone_contact(scene_, e.a, e.b); }))
+          continue;
         for (const Eigen::Vector3d& goal : probe_goals(graph_.states[id]))
           probes.push_back({id, -1, goal});
         // Tipping about each contact: about an edge's tangent, and about the two axes of the
@@ -1062,9 +1078,13 @@ State candidate_start(const SceneGeometry& scene, const State& from, const Candi
 
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
                                const Candidate& candidate, const MotionObserver& observer) {
+  MotionOutcome last;
+  if (candidate.attempts == 0) {
+    last.reason = "no motion was run for this candidate: " + candidate.reason;
+    return last;
+  }
   const State from = candidate_start(scene, state, candidate);
   MotionCounters counters;
-  MotionOutcome last;
   for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
     if (!(h.cf == candidate.cf)) continue;
     const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
