@@ -9,7 +9,7 @@
 
 namespace pcsg {
 
-Convexity quadric_convexity(const Polynomial& g) {
+Convexity quadric_convexity(const Polynomial& g, const Eigen::Vector3d& at) {
   if (g.degree() != 2) return {};
   // Constant for a quadric; evaluated at its expansion point.
   const Eigen::Matrix3d H = g.hessian(g.origin());
@@ -28,11 +28,11 @@ Convexity quadric_convexity(const Polynomial& g) {
     out.strictly = true;
   } else if (lambda[1] > round_off) {
     // One null direction d: along it g is linear with slope grad g . d, the same everywhere
-    // (H d = 0). A slope well above round-off (1e-6 of the gradient's size at the expansion
-    // point, or of the linear coefficients') means no line lies on the surface (a
-    // paraboloid); a zero slope is a cylinder.
+    // (H d = 0). A slope well above round-off (1e-6 of the gradient's size at `at`) means no
+    // line lies on the surface (a paraboloid); a zero slope is a cylinder. A slope below that
+    // is taken as a cylinder: the answer errs toward "not strictly", which prunes nothing.
     const Eigen::Vector3d d = eig.eigenvectors().col(0);
-    const Eigen::Vector3d grad = g.gradient(g.origin());
+    const Eigen::Vector3d grad = g.gradient(at);
     constexpr double kSlopeRelative = 1e-6;
     out.strictly = std::abs(grad.dot(d)) > kSlopeRelative * grad.norm() && grad.norm() > 0;
   }
@@ -44,7 +44,7 @@ Convexity support_convexity(const Solid& solid, ElementId element) {
   if (set.size == 0) return {};
   Convexity out{true, true};
   for (int k = 0; k < set.size; ++k) {
-    const Convexity c = quadric_convexity(solid.surfaces[set.index[k]]);
+    const Convexity c = quadric_convexity(solid.surfaces[set.index[k]], solid.bbox.center());
     out.convex = out.convex && c.convex;
     out.strictly = out.strictly && c.strictly;
   }

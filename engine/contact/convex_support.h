@@ -24,8 +24,10 @@ struct Convexity {
 // Of the set {g <= 0} for a polynomial of degree 2 (its Hessian is constant: convex when it is
 // positive semidefinite; strictly when positive definite, or when its one null direction d
 // is not tangent to any level set, grad g . d != 0, which rules out lines on the surface).
+// `at` is a point where the surface matters (its solid's box centre): the slope grad g . d is
+// compared with the gradient's size there, so that the verdict moves with the solid.
 // Other degrees: not known, so {} (convex false).
-Convexity quadric_convexity(const Polynomial& g);
+Convexity quadric_convexity(const Polynomial& g, const Eigen::Vector3d& at);
 
 // The support set of one element: convex when every surface through it is, strictly when every
 // one is strictly (an intersection of strictly convex sets is strictly convex).

@@ -16,7 +16,7 @@ namespace pcsg {
 namespace {
 
 Convexity of(const std::string& inequality) {
-  return quadric_convexity(parse_inequality(inequality).g);
+  return quadric_convexity(parse_inequality(inequality).g, Eigen::Vector3d::Zero());
 }
 
 const SceneGeometry& scene(const std::string& file) {
@@ -68,6 +68,31 @@ TEST(LoneContactPairs, RuleOutSecondContactsOnConvexElementsOnly) {
   const SceneGeometry& g2 = scene("example2.yaml");
   EXPECT_EQ(lone(g2, "{(eA-e2, 1), (fA1-f1, 1)}"), "eA-e2");
   EXPECT_EQ(lone(g2, "{(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)}"), "");
+}
+
+// The verdicts do not depend on B's frame, the scene's scale or the equations' scaling: each
+// element's support set is judged alike in the stress copies of both examples.
+TEST(SupportConvexity, IsTheSameInTheMovedScaledAndIllScaledCopies) {
+  auto verdicts = [](const SceneGeometry& g) {
+    std::vector<std::pair<bool, bool>> out;
+    for (const Solid* S : {&g.A, &g.B}) {
+      for (int i = 0; i < static_cast<int>(S->faces.size()); ++i) {
+        const Convexity c = support_convexity(*S, {ElementKind::Face, i});
+        out.emplace_back(c.convex, c.strictly);
+      }
+      for (int i = 0; i < static_cast<int>(S->edges.size()); ++i) {
+        const Convexity c = support_convexity(*S, {ElementKind::Edge, i});
+        out.emplace_back(c.convex, c.strictly);
+      }
+    }
+    return out;
+  };
+  for (const std::string ex : {"example1", "example2"}) {
+    const auto want = verdicts(scene(ex + ".yaml"));
+    for (const char* copy : {"_far_rotated", "_scaled_1e-4", "_scaled_1e4"})
+      EXPECT_EQ(verdicts(scene("stress/" + ex + copy + ".yaml")), want) << ex << copy;
+  }
+  EXPECT_EQ(verdicts(scene("stress/example1_ill_scaled.yaml")), verdicts(scene("example1.yaml")));
 }
 
 // Every state of Example 2's stored signature (generated before this condition existed, each
