@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "app/command.h"
 #include "app/progress_line.h"
@@ -24,7 +25,8 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 struct Args {
   std::string scene;
   std::string out = "out";
-  int threads = 1;
+  // Every core by default: the graph does not depend on the number (GeneratorOptions).
+  int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   bool quiet = false;
 };
 

@@ -1,0 +1,52 @@
+// End-to-end: `pcsg generate` uses every core unless told otherwise, and its graph.json is the
+// one-thread run's byte for byte (but for the run time); a bad thread count is a usage error.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "run_pcsg.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using pcsg::testing::ExeRun;
+using pcsg::testing::run_pcsg;
+
+std::string example1() { return std::string(PCSG_SOURCE_DIR) + "/scenes/example1.yaml"; }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("pcsg_generate_test_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+json graph_without_time(const fs::path& dir) {
+  std::ifstream in(dir / "graph.json");
+  json g = json::parse(in);
+  g["stats"].erase("seconds");
+  return g;
+}
+
+TEST(GenerateCommand, DefaultThreadsGiveTheOneThreadGraph) {
+  const fs::path one = fresh_dir("one"), all = fresh_dir("all");
+  const ExeRun a = run_pcsg("generate -q " + example1() + " -j 1 -o " + one.string());
+  ASSERT_EQ(a.exit_code, 0) << a.out;
+  const ExeRun b = run_pcsg("generate -q " + example1() + " -o " + all.string());
+  ASSERT_EQ(b.exit_code, 0) << b.out;
+  EXPECT_EQ(graph_without_time(one).dump(), graph_without_time(all).dump());
+  EXPECT_NE(b.out.find("8 states"), std::string::npos) << b.out;
+}
+
+TEST(GenerateCommand, RejectsAThreadCountOutOfRange) {
+  const ExeRun r = run_pcsg("generate " + example1() + " -j 0 -o " + fresh_dir("bad").string(),
+                            /*merge_stderr=*/true);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("--threads"), std::string::npos) << r.out;
+}
+
+}  // namespace
