@@ -158,7 +158,8 @@ void run_scene(const Args& a, const std::string& scene_file, const std::string& 
               scene.spec.name.c_str(), s.states, s.links, s.candidates, s.feasible, s.transitions,
               s.frames, stored ? "graph read from file; its generation took" : "generation",
               s.generation_seconds, total, folder.c_str());
-  for (const std::string& why : s.skipped) std::printf("  not drawn: %s\n", why.c_str());
+  for (const std::string& why : s.skipped)
+    std::printf("  not drawn (its replay failed): %s\n", why.c_str());
   std::fflush(stdout);
 }
 

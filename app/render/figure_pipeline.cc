@@ -1,7 +1,6 @@
 #include "app/render/figure_pipeline.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <thread>
 
 namespace pcsg::app {
@@ -41,10 +40,7 @@ void stream_stored(const SceneGeometry& scene, StateGraph graph, BoundedQueue<Gr
 bool wanted(const CandidateTried& c, const PipelineOptions& o) {
   if (!o.transitions) return false;
   if (o.failed_only && c.candidate.feasible) return false;
-  if (!o.candidates.empty()) return o.candidates.count(c.index) > 0;
-  // No motion was run for it (a CF no configuration has, convex_support.h, or no start was
-  // CF-compliant): nothing to draw unless asked for by number (then its replay says why).
-  return c.candidate.attempts > 0;
+  return o.candidates.empty() || o.candidates.count(c.index) > 0;
 }
 
 // Replays one candidate and streams its frames; false when the consumer has stopped.
@@ -53,9 +49,8 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   std::vector<MotionFrame> frames;
   // (the state at the witness the motion started from: a retry's is another of its witnesses)
   const State from = candidate_start(scene, c.from, c.candidate);
-  const MotionOutcome outcome =
-      replay_candidate(scene, c.from, c.candidate, [&](const MotionFrame& f) { frames.push_back(f); });
-  if (frames.empty()) throw std::runtime_error(outcome.reason);
+  const MotionOutcome outcome = replay_candidate(
+      scene, c.from, c.candidate, [&](const MotionFrame& f) { frames.push_back(f); });
   // a motion that stops because a kept contact left its elements reports its last frame as a
   // "collision" without elements (default ids): keep only the elements there are
   for (MotionFrame& f : frames) {

@@ -243,7 +243,9 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
   MotionStarts starts(scene, s, h);
   std::map<std::tuple<size_t, size_t, size_t>, MotionOutcome> runs;
   const bool signed_target = r.wanted.size() > 1 || !r.wanted.front().empty();
-  // No configuration has this CF (convex_support.h): recorded, no motion run.
+  // No configuration has this CF (convex_support.h): its motions still run, for what they
+  // meet on the way (a failed motion that meets a new contact discovers a state above), and
+  // the candidate says why it cannot succeed.
   const std::optional<PtcCount> lone = lone_contact_pair(scene, h.cf);
   for (const RegionSignature& sig : r.wanted) {
     Reached out;
@@ -251,13 +253,6 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
     c.from = s.id;
     c.cf = h.cf;
     if (signed_target) c.crossing = signature_text(scene, sig);
-    if (lone) {
-      c.reason = "no configuration has this CF: " + element_pair_name(scene, lone->a, lone->b) +
-                 " join convex sets, one strictly convex, so where they touch the objects "
-                 "touch nowhere else";
-      r.targets.push_back(std::move(out));
-      continue;
-    }
     std::string reasons;
     auto note = [&](const std::string& why) {
       if (!reasons.empty()) reasons += "; ";
@@ -305,6 +300,11 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
       }
     }
     if (!c.feasible) c.reason = reasons;
+    if (lone)
+      c.reason = "no configuration has this CF: " + element_pair_name(scene, lone->a, lone->b) +
+                 " join convex sets, one strictly convex, so where they touch the objects "
+                 "touch nowhere else; " +
+                 c.reason;
     r.targets.push_back(std::move(out));
   }
   return r;
@@ -804,6 +804,7 @@ void Builder::retry_from_other_witnesses() {
         for (const Hypothesis& h : hypothesise_ln(scene_, from.contacts)) {
           if (!retried_.insert({static_cast<int>(id), static_cast<int>(k), h.cf}).second)
             continue;
+          if (lone_contact_pair(scene_, h.cf)) continue;  // a CF no configuration has
           const RegionSignatures wanted = missing_signatures(from.contacts, h);
           if (wanted.empty()) continue;
           if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
@@ -851,6 +852,7 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
         const std::tuple<int, int, ContactFormation> key{static_cast<int>(id),
                                                          static_cast<int>(k), h.cf};
         if (retried_.count(key) || !listed.insert(key).second) continue;
+        if (lone_contact_pair(scene_, h.cf)) continue;  // a CF no configuration has
         RegionSignatures wanted = missing_signatures(members_[id][k].contacts, h);
         if (wanted.empty()) continue;
         jobs.push_back(
@@ -1078,13 +1080,9 @@ State candidate_start(const SceneGeometry& scene, const State& from, const Candi
 
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
                                const Candidate& candidate, const MotionObserver& observer) {
-  MotionOutcome last;
-  if (candidate.attempts == 0) {
-    last.reason = "no motion was run for this candidate: " + candidate.reason;
-    return last;
-  }
   const State from = candidate_start(scene, state, candidate);
   MotionCounters counters;
+  MotionOutcome last;
   for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
     if (!(h.cf == candidate.cf)) continue;
     const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);

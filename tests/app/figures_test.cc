@@ -286,30 +286,6 @@ TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
   EXPECT_EQ(after, want);
 }
 
-// A candidate toward a CF no configuration has (convex_support.h) ran no motion: a drawing of
-// every candidate passes over it, and one asked for by number says why it is not drawn.
-TEST(FiguresCommandTest, RuledOutCandidateIsNamedNotDrawn) {
-  const fs::path out = fresh_dir("ruled_out");
-  const ExeRun gen = run_pcsg("generate " + source("scenes/example1.yaml") + " -o " + out.string());
-  ASSERT_EQ(gen.exit_code, 0) << gen.out;
-  std::ifstream in(out / "graph.json");
-  const json graph = json::parse(in);
-  int k = -1;
-  for (std::size_t i = 0; i < graph["candidates"].size() && k < 0; ++i)
-    if (graph["candidates"][i]["attempts"].get<int>() == 0) k = static_cast<int>(i);
-  ASSERT_GE(k, 0) << "Example 1 has no ruled-out candidate";
-  const ExeRun r =
-      run_pcsg("figures -q --scene " + source("scenes/example1.yaml") + " --graph " +
-               (out / "graph.json").string() + " --only transitions --size 160x120 --candidate " +
-               std::to_string(k) + " --out " + (out / "figures").string());
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("drew 0 transitions"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("not drawn: candidate " + std::to_string(k) +
-                       ": no motion was run for this candidate: no configuration has this CF"),
-            std::string::npos)
-      << r.out;
-}
-
 TEST(FiguresCommandTest, RejectsUnknownParts) {
   const ExeRun r = run_pcsg("figures --only pictures --out " + fresh_dir("bad").string());
   EXPECT_EQ(r.exit_code, 2) << r.out;

@@ -55,17 +55,18 @@ void expect_witnesses_valid(const Generated& g) {
 }
 
 // Candidates toward a CF that the convexity condition rules out (convex_support.h: a contact
-// between convex elements, one strictly convex, is a configuration's only one) run no motion
-// and say why; no state the generator holds, however found (seeds, motions, discoveries,
-// probes), is such a CF. Measured: Example 1 5 of 27 candidates, Example 2 247 of 991.
+// between convex elements, one strictly convex, is a configuration's only one) fail and say
+// why (their motions still run from the state's own witness, for the states they meet on the
+// way; the retries from other witnesses leave them out); no state the generator holds, however
+// found (seeds, motions, discoveries, probes), is such a CF. Measured: Example 1 5 of 27
+// candidates, Example 2 247 of 991.
 void expect_ruled_out_candidates_sound(const Generated& g) {
   int ruled_out = 0;
   for (const Candidate& c : g.graph.candidates) {
     if (!lone_contact_pair(g.scene, c.cf)) continue;
     ++ruled_out;
     EXPECT_FALSE(c.feasible) << c.cf.str(g.scene);
-    EXPECT_EQ(c.attempts, 0) << c.cf.str(g.scene);
-    EXPECT_NE(c.reason.find("no configuration has this CF"), std::string::npos) << c.reason;
+    EXPECT_EQ(c.reason.rfind("no configuration has this CF", 0), 0u) << c.reason;
   }
   EXPECT_GT(ruled_out, 0) << "no candidate was ruled out: the check checks nothing";
   for (const State& s : g.graph.states)
