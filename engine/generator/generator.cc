@@ -376,7 +376,7 @@ class Builder {
   // threads; keyed by (state, witness, CF). Empty with one thread.
   std::map<std::tuple<int, int, ContactFormation>, TryResult> try_retries_ahead();
   // The region signatures of `h`'s target (from a witness with `contacts`) that no state of
-  // the graph has: what a retry still looks for.
+  // the graph has: what a retry still looks for (nothing for a CF no configuration has).
   RegionSignatures missing_signatures(const std::vector<PointContact>& contacts,
                                       const Hypothesis& h) const;
   void add_link(int from, int to, const std::string& motion);
@@ -804,7 +804,6 @@ void Builder::retry_from_other_witnesses() {
         for (const Hypothesis& h : hypothesise_ln(scene_, from.contacts)) {
           if (!retried_.insert({static_cast<int>(id), static_cast<int>(k), h.cf}).second)
             continue;
-          if (lone_contact_pair(scene_, h.cf)) continue;  // a CF no configuration has
           const RegionSignatures wanted = missing_signatures(from.contacts, h);
           if (wanted.empty()) continue;
           if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
@@ -852,7 +851,6 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
         const std::tuple<int, int, ContactFormation> key{static_cast<int>(id),
                                                          static_cast<int>(k), h.cf};
         if (retried_.count(key) || !listed.insert(key).second) continue;
-        if (lone_contact_pair(scene_, h.cf)) continue;  // a CF no configuration has
         RegionSignatures wanted = missing_signatures(members_[id][k].contacts, h);
         if (wanted.empty()) continue;
         jobs.push_back(
@@ -968,6 +966,8 @@ void Builder::retry_missing_links() {
 RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& contacts,
                                              const Hypothesis& h) const {
   RegionSignatures out;
+  // A CF no configuration has (convex_support.h) is no region a retry could reach.
+  if (lone_contact_pair(scene_, h.cf)) return out;
   for (RegionSignature& sig : target_signatures(contacts, h)) {
     bool have = false;
     for (const State& s : graph_.states)
