@@ -358,7 +358,8 @@ class Builder {
   // id's witness), links and candidates redirected, duplicate links dropped.
   void merge_united_states();
   // States of one CF and region signature that no join proved one while the graph grew, joined
-  // now by paths in the contact's parameters (cf_parameter_path.h): united when one is found.
+  // now by paths in the contact's parameters (cf_parameter_path.h) or through a roadmap of the
+  // region (joined_by_roadmap, state_identity.h): united when one is found.
   // At the end, so that each duplicate's own transitions are in the graph before its links
   // are re-pointed by merge_united_states.
   void join_duplicate_states();
@@ -666,6 +667,11 @@ void Builder::join_duplicate_states() {
         for (size_t v = 0; v < members_[j].size() && !joined; ++v)
           joined = joined_by_parameter_path(scene_, members_[i][u].pose, members_[j][v].pose,
                                             si.cf, counters_, symmetry_);
+      // Then through a roadmap of the region between the two states' own witnesses (joined
+      // the duplicates of Example 1 swapped and of the needle that every path above missed).
+      if (!joined)
+        joined = joined_by_roadmap(scene_, members_[i][0].pose, members_[j][0].pose, si.cf,
+                                   signatures_[i], counters_);
       if (!joined) continue;
       const int r1 = representative(i), r2 = representative(j);
       united_[std::max(r1, r2)] = std::min(r1, r2);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace pcsg {
 
@@ -175,6 +178,95 @@ bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
   if (!mid.ok) return false;
   return joined_within_cf(scene, a, mid.pose, cf, counters, symmetry, midpoint_levels - 1) &&
          joined_within_cf(scene, mid.pose, b, cf, counters, symmetry, midpoint_levels - 1);
+}
+
+namespace {
+
+// Roadmap samples between the witnesses: kRoadmapFractions poses evenly spaced from a to b,
+// each also turned by the kRoadmapTurns (radians) about each of A's axes through its centre;
+// near each witness: moved by kRoadmapMoves of A's size along each of A's axes and turned by
+// twice that (radians) about it. Sized to the failed joins measured: the duplicates of
+// Example 1 swapped and of the needle (stress scene) are joined with 11 and 21 of these nodes.
+constexpr int kRoadmapFractions = 7;
+constexpr double kRoadmapTurns[] = {0.3, -0.3, 0.6, -0.6};
+constexpr double kRoadmapMoves[] = {0.1, -0.1, 0.25, -0.25};
+// Edges tried: each node toward this many nearest others.
+constexpr int kRoadmapNeighbours = 8;
+
+// `X` turned by `angle` about A's axis `axis` through A's centre `cA`.
+Pose turned_about_own_axis(const Pose& X, int axis, double angle, const Eigen::Vector3d& cA) {
+  const Eigen::Vector3d u = X.quaternion * Eigen::Vector3d::Unit(axis);
+  const Eigen::Vector3d c = X.apply(cA);
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, u));
+  Pose t;
+  t.quaternion = (q * X.quaternion).normalized();
+  t.position = q * (X.position - c) + c;
+  return t;
+}
+
+}  // namespace
+
+bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
+                       const ContactFormation& cf, const RegionSignature& signature,
+                       MotionCounters& counters, RoadmapStats* stats) {
+  const double size = scene.A.bbox.diagonal().norm() / 2;
+  const Eigen::Vector3d cA = scene.A.bbox.center();
+  std::vector<Pose> starts;
+  for (int k = 1; k <= kRoadmapFractions; ++k) {
+    const double f = static_cast<double>(k) / (kRoadmapFractions + 1);
+    Pose m;
+    m.position = (1 - f) * a.position + f * b.position;
+    m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
+    starts.push_back(m);
+    for (int axis = 0; axis < 3; ++axis)
+      for (double angle : kRoadmapTurns)
+        starts.push_back(turned_about_own_axis(m, axis, angle, cA));
+  }
+  for (const Pose* w : {&a, &b})
+    for (int axis = 0; axis < 3; ++axis)
+      for (double move : kRoadmapMoves) {
+        starts.push_back(turned_about_own_axis(*w, axis, 2 * move, cA));
+        Pose m = *w;
+        m.position += move * size * (w->quaternion * Eigen::Vector3d::Unit(axis));
+        starts.push_back(m);
+      }
+  std::vector<Pose> nodes = {a, b};
+  for (const Pose& start : starts) {
+    ++counters.detections;
+    const ProjectionResult p = project_onto_cf(scene, start, cf);
+    if (p.ok && region_signature(p.contacts) == signature) nodes.push_back(p.pose);
+  }
+  const int n = static_cast<int>(nodes.size());
+  // Union-find over the nodes; a and b are nodes 0 and 1.
+  std::vector<int> parent(n);
+  for (int i = 0; i < n; ++i) parent[i] = i;
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto distance = [&](const Pose& x, const Pose& y) {
+    return (x.apply(cA) - y.apply(cA)).norm() + size * x.quaternion.angularDistance(y.quaternion);
+  };
+  std::vector<std::tuple<double, int, int>> edges;
+  for (int i = 0; i < n; ++i) {
+    std::vector<std::pair<double, int>> near;
+    for (int j = 0; j < n; ++j)
+      if (j != i) near.emplace_back(distance(nodes[i], nodes[j]), j);
+    std::sort(near.begin(), near.end());
+    for (int k = 0; k < std::min<int>(kRoadmapNeighbours, static_cast<int>(near.size())); ++k)
+      edges.emplace_back(near[k].first, std::min(i, near[k].second), std::max(i, near[k].second));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  int motions = 0;
+  for (const auto& [d, i, j] : edges) {
+    if (root(0) == root(1)) break;
+    if (root(i) == root(j)) continue;
+    ++motions;
+    if (moved_either_way(scene, nodes[i], nodes[j], cf, counters)) parent[root(i)] = root(j);
+  }
+  if (stats) *stats = {n, motions};
+  return root(0) == root(1);
 }
 
 }  // namespace pcsg

@@ -80,4 +80,21 @@ bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
                       const ContactFormation& cf, MotionCounters& counters,
                       const SceneSymmetry& symmetry = {}, int midpoint_levels = 1);
 
+// Whether the witnesses `a` and `b` of `cf` (both with region signature `signature`) are
+// joined through a roadmap of the CF's region: nodes are a, b and sample poses projected onto
+// `cf` (exact contacts, no other contact, no penetration, the same signature), edges are
+// CF-compliant motions between near nodes (connected_within_cf either way), tried nearest
+// pair first until a and b are connected. The samples: poses interpolated between a and b,
+// each also turned about A's own axes; and a and b themselves moved and turned along A's axes
+// (all moving with A, so the roadmap does not depend on B's frame or the scene's unit). Every
+// edge is a checked motion, so `true` is a proof; `false` proves nothing. `stats` (optional)
+// receives the nodes and the motions tried.
+struct RoadmapStats {
+  int nodes = 0;
+  int motions = 0;
+};
+bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
+                       const ContactFormation& cf, const RegionSignature& signature,
+                       MotionCounters& counters, RoadmapStats* stats = nullptr);
+
 }  // namespace pcsg

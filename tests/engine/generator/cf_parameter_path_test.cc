@@ -70,6 +70,12 @@ TEST(CfParameterPath, JoinsCrossingsOfOneSignOnly) {
   MotionCounters counters;
   EXPECT_TRUE(joined_by_parameter_path(scene, a, b, cf, counters));
   EXPECT_FALSE(joined_by_parameter_path(scene, a, c, cf, counters));
+  // Nor does a roadmap of the region (state_identity.h) reach the other sign.
+  const RegionSignature sig = region_signature(detect_contacts(scene, a).contacts);
+  ASSERT_NE(sig, region_signature(detect_contacts(scene, c).contacts));
+  RoadmapStats stats;
+  EXPECT_FALSE(joined_by_roadmap(scene, a, c, cf, sig, counters, &stats));
+  EXPECT_GT(stats.motions, 0);
 }
 
 Pose pose(double x, double y, double z, double qw, double qx, double qy, double qz) {

@@ -145,7 +145,10 @@ TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
                   "Example 1's graph lacks a real state. Re-measured in session 9 (4b9df8a): "
                   "the same 10 states and 42 links (54 s); the 3-contact state is met by a "
                   "motion from {(fA-e1, 1), (fA-f1, 1)} (its GN link), not by the swapped "
-                  "scene's seed search, which finds single contacts and {(fA-f1, 2)} only.";
+                  "scene's seed search, which finds single contacts and {(fA-f1, 2)} only. "
+                  "Session 14: the roadmap join (state_identity.h) proves the two "
+                  "{(fA-e1, 1), (fA-f1, 1)} witnesses one state, so the swapped run has 9 "
+                  "states and 36 links; the original's 8 still lack the 3-contact state.";
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
   expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
 }

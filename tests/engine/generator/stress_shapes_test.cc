@@ -190,13 +190,13 @@ TEST(StressBifurcation, BothContactsNextToTheMergeAreDetectedAndGrow) {
 // tip on the dish wall, {(fA-e1, 1), (fA-f1, 1)}. No state has a contact with f2 and another
 // element (a segment tangent to the sphere meets it once, and e1 and e2 lie on it).
 TEST(StressShapes, NeedleInTheDish) {
-  GTEST_SKIP() << "generator defect (state identity, engine/generator), measured: the graph "
-                  "from automatic seeds has 8 states and 20 links: every single-contact CF "
-                  "once, {(fA-f1, 2)}, and {(fA-e1, 1), (fA-f1, 1)} twice (two witnesses no "
-                  "joining motion connects, the path in the contact's parameters "
-                  "(cf_parameter_path.h) included: its pieces fail with the rim contact "
-                  "leaving e1 or fA penetrating f2; one witness has the rim contact on the "
-                  "needle's very tip), but no {(fA-e1, 2)} (the needle across the rim). "
+  GTEST_SKIP() << "generator defect (completeness, engine/generator), measured in session "
+                  "14: the graph from automatic seeds has 7 states and 20 links: every "
+                  "single-contact CF, {(fA-f1, 2)} and {(fA-e1, 1), (fA-f1, 1)}, but no "
+                  "{(fA-e1, 2)} (the needle across the rim). Until session 14 it held "
+                  "{(fA-e1, 1), (fA-f1, 1)} twice (two witnesses no joining motion connected, "
+                  "the path in the contact's parameters (cf_parameter_path.h) included); the "
+                  "roadmap join (state_identity.h) now proves them one state. "
                   "Before the tips were meshed (mesh_extremes.h) and their contacts solved "
                   "from the support point (contact_detection.cc), 6 states: detection saw no "
                   "contact at touching tips, only penetrations.";
