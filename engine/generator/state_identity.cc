@@ -88,11 +88,12 @@ TurnedWitness crossing_squared(const SceneGeometry& scene, const Pose& X,
   return turned_about_normal(scene, X, rep.contacts, 0, theta, counters);
 }
 
-Pose halfway(const Pose& a, const Pose& b) {
+// The pose a fraction `f` of the way from a to b: positions interpolated, orientations
+// slerped (Eigen's slerp takes the shorter arc: it flips the sign of a negative dot product).
+Pose between(const Pose& a, const Pose& b, double f) {
   Pose m;
-  m.position = 0.5 * (a.position + b.position);
-  // Eigen's slerp takes the shorter arc (it flips the sign of a negative dot product).
-  m.quaternion = a.quaternion.slerp(0.5, b.quaternion).normalized();
+  m.position = (1 - f) * a.position + f * b.position;
+  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
   return m;
 }
 
@@ -173,7 +174,7 @@ bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
   if (midpoint_levels <= 0) return false;
   // A waypoint: the pose halfway, moved onto the CF (the projection checks it by detection:
   // exactly `cf`, no penetration).
-  const ProjectionResult mid = project_onto_cf(scene, halfway(a, b), cf);
+  const ProjectionResult mid = project_onto_cf(scene, between(a, b, 0.5), cf);
   ++counters.detections;
   if (!mid.ok) return false;
   return joined_within_cf(scene, a, mid.pose, cf, counters, symmetry, midpoint_levels - 1) &&
@@ -193,17 +194,6 @@ constexpr double kRoadmapMoves[] = {0.1, -0.1, 0.25, -0.25};
 // Edges tried: each node toward this many nearest others.
 constexpr int kRoadmapNeighbours = 8;
 
-// `X` turned by `angle` about A's axis `axis` through A's centre `cA`.
-Pose turned_about_own_axis(const Pose& X, int axis, double angle, const Eigen::Vector3d& cA) {
-  const Eigen::Vector3d u = X.quaternion * Eigen::Vector3d::Unit(axis);
-  const Eigen::Vector3d c = X.apply(cA);
-  const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, u));
-  Pose t;
-  t.quaternion = (q * X.quaternion).normalized();
-  t.position = q * (X.position - c) + c;
-  return t;
-}
-
 }  // namespace
 
 bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
@@ -214,18 +204,16 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
   std::vector<Pose> starts;
   for (int k = 1; k <= kRoadmapFractions; ++k) {
     const double f = static_cast<double>(k) / (kRoadmapFractions + 1);
-    Pose m;
-    m.position = (1 - f) * a.position + f * b.position;
-    m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
+    const Pose m = between(a, b, f);
     starts.push_back(m);
     for (int axis = 0; axis < 3; ++axis)
       for (double angle : kRoadmapTurns)
-        starts.push_back(turned_about_own_axis(m, axis, angle, cA));
+        starts.push_back(turned_about_A(m, {cA, Eigen::Vector3d::Unit(axis)}, angle));
   }
   for (const Pose* w : {&a, &b})
     for (int axis = 0; axis < 3; ++axis)
       for (double move : kRoadmapMoves) {
-        starts.push_back(turned_about_own_axis(*w, axis, 2 * move, cA));
+        starts.push_back(turned_about_A(*w, {cA, Eigen::Vector3d::Unit(axis)}, 2 * move));
         Pose m = *w;
         m.position += move * size * (w->quaternion * Eigen::Vector3d::Unit(axis));
         starts.push_back(m);
