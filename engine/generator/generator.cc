@@ -905,11 +905,8 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) 
     const double angle = a.quaternion.angularDistance(s.pose.quaternion);
     if (angle < best) best = angle, target = a;
   }
-  Pose mid;
-  mid.position = (1 - f) * s.pose.position + f * target.position;
-  mid.quaternion = s.pose.quaternion.slerp(f, target.quaternion).normalized();
   ++counters_.detections;
-  const ProjectionResult proj = project_onto_cf(scene_, mid, s.cf);
+  const ProjectionResult proj = project_onto_cf(scene_, between(s.pose, target, f), s.cf);
   if (!proj.ok) return std::nullopt;
   ++counters_.detections;
   const ContactReport rep = detect_contacts(scene_, proj.pose);

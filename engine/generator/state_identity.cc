@@ -88,15 +88,6 @@ TurnedWitness crossing_squared(const SceneGeometry& scene, const Pose& X,
   return turned_about_normal(scene, X, rep.contacts, 0, theta, counters);
 }
 
-// The pose a fraction `f` of the way from a to b: positions interpolated, orientations
-// slerped (Eigen's slerp takes the shorter arc: it flips the sign of a negative dot product).
-Pose between(const Pose& a, const Pose& b, double f) {
-  Pose m;
-  m.position = (1 - f) * a.position + f * b.position;
-  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
-  return m;
-}
-
 bool moved_either_way(const SceneGeometry& scene, const Pose& a, const Pose& b,
                       const ContactFormation& cf, MotionCounters& counters) {
   return connected_within_cf(scene, a, b, cf, counters) ||
@@ -104,6 +95,14 @@ bool moved_either_way(const SceneGeometry& scene, const Pose& a, const Pose& b,
 }
 
 }  // namespace
+
+Pose between(const Pose& a, const Pose& b, double f) {
+  Pose m;
+  m.position = (1 - f) * a.position + f * b.position;
+  // Eigen's slerp takes the shorter arc (it flips the sign of a negative dot product).
+  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
+  return m;
+}
 
 Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& b,
                          const SceneSymmetry& sym) {
