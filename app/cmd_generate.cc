@@ -1,4 +1,5 @@
-// pcsg generate SCENE [-o DIR] [--threads N]: the point-contact state graph of a scene.
+// pcsg generate SCENE [-o DIR] [--threads N] [--project-upward]: the point-contact state graph
+// of a scene.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -28,6 +29,7 @@ struct Args {
   // Every core by default: the graph does not depend on the number (GeneratorOptions).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   bool quiet = false;
+  bool project_upward = false;
 };
 
 void run(const Args& a) {
@@ -36,6 +38,7 @@ void run(const Args& a) {
   const SceneGeometry scene = build_scene_geometry(spec);
   GeneratorOptions opt;
   opt.threads = a.threads;
+  opt.project_upward = a.project_upward;
   ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
   progress.finish();
@@ -78,6 +81,9 @@ void setup(CLI::App& cli) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
+  cmd->add_flag("--project-upward", args->project_upward,
+                "Also look for the states one contact above each state by projecting turned "
+                "witnesses (GeneratorOptions::project_upward)");
   cmd->callback([args] { run(*args); });
 }
 

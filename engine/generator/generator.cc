@@ -328,11 +328,16 @@ enum class Phase {
   Retries,       // hypotheses tried again from a state's other witnesses
   MissingLinks,  // hypotheses tried again from waypoints toward a CF's states
   Relabelling,   // the states and links the solids' relabelling half turns imply
+  Projections,   // the upward projections: one contact more, from turned witnesses
 };
-constexpr const char* kPhaseNames[] = {
-    "seeds",          "transition motions",           "upward probes",
-    "state identity", "retries from other witnesses", "missing-link retries",
-    "relabelling"};
+constexpr const char* kPhaseNames[] = {"seeds",
+                                       "transition motions",
+                                       "upward probes",
+                                       "state identity",
+                                       "retries from other witnesses",
+                                       "missing-link retries",
+                                       "relabelling",
+                                       "upward projections"};
 constexpr int kPhases = sizeof(kPhaseNames) / sizeof(kPhaseNames[0]);
 
 class Builder {
@@ -394,6 +399,13 @@ class Builder {
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
   std::vector<Eigen::Vector3d> probe_goals(const State& s) const;
+  // States one contact above each state not yet searched, found by projecting its witness,
+  // turned about A's centre, onto each CF that adds one PtC and that the graph does not have
+  // (paper Section IV: one seed per local maximum; a motion or probe from a witness at the
+  // edge of its region can miss a state above it that lies elsewhere along the region). Each
+  // new state seeds its own LN graph. Returns whether any state was added.
+  bool project_upward();
+  std::set<int> projected_upward_;
 
   const SceneGeometry& scene_;
   GeneratorOptions options_;
@@ -538,6 +550,105 @@ std::vector<Eigen::Vector3d> Builder::probe_goals(const State& s) const {
   for (size_t v = 0; v < B.vertices.size(); ++v)
     if (!touched({ElementKind::Vertex, static_cast<int>(v)})) goals.push_back(B.vertices[v].point);
   return goals;
+}
+
+// Turns of A about its centre from which project_upward starts: kUpwardTurns axes spread over
+// the sphere (a Fibonacci lattice), angles up to kUpwardMaxTurn radians (a golden-ratio
+// sequence); they move with A, so they do not depend on B's frame or the unit. Sized on
+// Example 1's {(fA-e1, 2), (fA-f1, 1)} from the witnesses of the two 2-contact states below
+// it: 8 of 474 such starts project onto it, 2 of 474 with B's frame moved far and rotated;
+// with 100 turns none did there.
+constexpr int kUpwardTurns = 200;
+constexpr double kUpwardMaxTurn = 1.2;
+
+bool Builder::project_upward() {
+  PhaseScope phase(*this, Phase::Projections);
+  struct Target {
+    int state;
+    ContactFormation cf;
+  };
+  auto elements = [](const Solid& S) {
+    std::vector<ElementId> out;
+    for (size_t i = 0; i < S.faces.size(); ++i)
+      out.push_back({ElementKind::Face, static_cast<int>(i)});
+    for (size_t i = 0; i < S.edges.size(); ++i)
+      out.push_back({ElementKind::Edge, static_cast<int>(i)});
+    for (size_t i = 0; i < S.vertices.size(); ++i)
+      out.push_back({ElementKind::Vertex, static_cast<int>(i)});
+    return out;
+  };
+  const std::vector<ElementId> EA = elements(scene_.A), EB = elements(scene_.B);
+  std::vector<Target> targets;
+  const int n = static_cast<int>(graph_.states.size());
+  for (int id = 0; id < n; ++id) {
+    if (!projected_upward_.insert(id).second) continue;
+    const ContactFormation& cf = graph_.states[id].cf;
+    // A contact that must be the only one has no state above it (convex_support.h).
+    if (std::any_of(cf.entries().begin(), cf.entries().end(),
+                    [&](const PtcCount& e) { return lone_contact(scene_, e.a, e.b); }))
+      continue;
+    for (const ElementId& a : EA)
+      for (const ElementId& b : EB) {
+        // One generic contact more (codimension 1); a lone pair cannot be added to any.
+        const PtcType type = ptc_type_between(a.kind, b.kind);
+        if (ptc_codimension(type) != 1 || lone_contact(scene_, a, b)) continue;
+        ContactFormation t = cf;
+        t.add(a, b, type, 1);
+        if (std::none_of(graph_.states.begin(), graph_.states.end(),
+                         [&](const State& s) { return s.cf == t; }))
+          targets.push_back({id, t});
+      }
+  }
+  if (targets.empty()) return false;
+  const Eigen::Vector3d cA = scene_.A.bbox.center();
+  std::vector<SymmetryAxis> turns;
+  for (int i = 0; i < kUpwardTurns; ++i) {
+    const double z = 1 - (2.0 * i + 1) / (2.0 * kUpwardTurns), r = std::sqrt(1 - z * z);
+    const double phi = i * 2.399963229728653;  // the golden angle
+    turns.push_back({cA, Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), z)});
+  }
+  auto angle = [](int i) {
+    return kUpwardMaxTurn * std::fmod(0.5 + i * 0.6180339887498949, 1.0);  // golden ratio - 1
+  };
+  const size_t jobs = targets.size() * turns.size();
+  std::vector<std::optional<ProjectionResult>> results(jobs);  // the converged ones
+  std::atomic<size_t> next{0}, done{0};
+  auto worker = [&](bool reports) {
+    for (size_t j; (j = next.fetch_add(1)) < jobs;) {
+      if (cancelled()) break;
+      const Target& t = targets[j / turns.size()];
+      const int i = static_cast<int>(j % turns.size());
+      ProjectionResult p = project_onto_cf(
+          scene_, turned_about_A(graph_.states[t.state].pose, turns[i], angle(i)), t.cf);
+      if (p.ok) results[j] = std::move(p);
+      const size_t finished = ++done;
+      if (reports && finished % 64 == 0)
+        report_phase(Phase::Projections, "projections", static_cast<int>(finished),
+                     static_cast<int>(jobs));
+    }
+  };
+  const int threads = std::max(1, std::min<int>(options_.threads, static_cast<int>(jobs)));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, false);
+  worker(true);
+  for (auto& t : pool) t.join();
+  if (cancelled()) return false;
+  counters_.detections += static_cast<long>(jobs);  // one per projection, as elsewhere
+  // In job order (whatever the thread count): the first witness of each target CF and region
+  // signature that joins no state seeds one.
+  bool added = false;
+  std::set<std::pair<ContactFormation, RegionSignature>> seen;
+  for (size_t j = 0; j < jobs; ++j) {
+    if (!results[j]) continue;
+    const ProjectionResult& p = *results[j];
+    const ContactFormation& cf = targets[j / turns.size()].cf;
+    if (!seen.insert({cf, region_signature(p.contacts)}).second) continue;
+    if (find_state(cf, p.pose, p.contacts) >= 0) continue;
+    if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
+    grow(add_state(cf, p.pose, p.contacts, true, 0));
+    added = true;
+  }
+  return added;
 }
 
 void Builder::grow(int seed_id) {
@@ -1029,7 +1140,12 @@ StateGraph Builder::run() {
     const size_t states = graph_.states.size(), found = discoveries_.size();
     retry_from_other_witnesses();
     if (!cancelled()) add_relabelled_states();
-    if (cancelled() || (graph_.states.size() == states && discoveries_.size() == found)) break;
+    if (cancelled()) break;
+    if (graph_.states.size() == states && discoveries_.size() == found) {
+      // Nothing new: then the states above each state that no motion or probe met.
+      if (options_.project_upward && project_upward()) continue;
+      break;
+    }
   }
 
   if (!cancelled()) retry_missing_links();

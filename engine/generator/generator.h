@@ -23,6 +23,15 @@ struct GeneratorOptions {
   // Probe upward from every state (push A toward the elements of B it does not touch) to find
   // states of higher cardinality that the seeds' LN graphs do not reach (other local maxima).
   bool probe_upward = true;
+  // After the growth, look for states one contact above each state that no motion or probe
+  // met: its witness, turned about A's centre in kUpwardTurns ways (generator.cc), projected
+  // onto each CF that adds one PtC to the state's and that the graph does not have; each new
+  // state found seeds its own LN graph. Off by default: it finds Example 1's
+  // {(fA-e1, 2), (fA-f1, 1)} in every frame tried, but in B's moved frames the transitions from
+  // that state end at {(fA-e1, 1), (fA-f1, 1)} witnesses that no join proves one with the
+  // state's first witness (a duplicate state), and it costs Example 2 a third more time for
+  // nothing new (docs/paper-comparison.md, session 16).
+  bool project_upward = false;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
   // Length of one small motion step relative to the scene's length scale; 0 keeps the scene's

@@ -148,7 +148,11 @@ TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
                   "scene's seed search, which finds single contacts and {(fA-f1, 2)} only. "
                   "Session 14: the roadmap join (state_identity.h) proves the two "
                   "{(fA-e1, 1), (fA-f1, 1)} witnesses one state, so the swapped run has 9 "
-                  "states and 36 links; the original's 8 still lack the 3-contact state.";
+                  "states and 36 links; the original's 8 still lack the 3-contact state. "
+                  "Session 16: with GeneratorOptions::project_upward (off by default, "
+                  "generator.h) the original holds it too, 9 states with the same CFs as the "
+                  "swapped run's, and 38 links against its 36 (the pair "
+                  "{(fA-e1, 2), (fA-f1, 1)} -- {(fA-f1, 2)} only in the original).";
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
   expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
 }
