@@ -9,13 +9,13 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 
 #include "engine/contact/convex_support.h"
 #include "engine/generator/cf_parameter_path.h"
 #include "engine/generator/hypothesis.h"
 #include "engine/generator/motion_drive.h"
+#include "engine/generator/parallel_for.h"
 #include "engine/generator/state_identity.h"
 
 namespace pcsg {
@@ -612,26 +612,20 @@ bool Builder::project_upward() {
   };
   const size_t jobs = targets.size() * turns.size();
   std::vector<std::optional<ProjectionResult>> results(jobs);  // the converged ones
-  std::atomic<size_t> next{0}, done{0};
-  auto worker = [&](bool reports) {
-    for (size_t j; (j = next.fetch_add(1)) < jobs;) {
-      if (cancelled()) break;
-      const Target& t = targets[j / turns.size()];
-      const int i = static_cast<int>(j % turns.size());
-      ProjectionResult p = project_onto_cf(
-          scene_, turned_about_A(graph_.states[t.state].pose, turns[i], angle(i)), t.cf);
-      if (p.ok) results[j] = std::move(p);
-      const size_t finished = ++done;
-      if (reports && finished % 64 == 0)
-        report_phase(Phase::Projections, "projections", static_cast<int>(finished),
-                     static_cast<int>(jobs));
-    }
-  };
-  const int threads = std::max(1, std::min<int>(options_.threads, static_cast<int>(jobs)));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, false);
-  worker(true);
-  for (auto& t : pool) t.join();
+  parallel_for(
+      jobs, options_.threads, [&] { return cancelled(); },
+      [&](size_t j) {
+        const Target& t = targets[j / turns.size()];
+        const int i = static_cast<int>(j % turns.size());
+        ProjectionResult p = project_onto_cf(
+            scene_, turned_about_A(graph_.states[t.state].pose, turns[i], angle(i)), t.cf);
+        if (p.ok) results[j] = std::move(p);
+      },
+      [&](size_t finished) {
+        if (finished % 64 == 0)
+          report_phase(Phase::Projections, "projections", static_cast<int>(finished),
+                       static_cast<int>(jobs));
+      });
   if (cancelled()) return false;
   counters_.detections += static_cast<long>(jobs);  // one per projection, as elsewhere
   // In job order (whatever the thread count): the first witness of each target CF and region
@@ -693,30 +687,22 @@ void Builder::grow(int seed_id) {
     std::vector<TryResult> results(jobs.size());
     std::vector<std::optional<Discovery>> probed(probes.size());
     std::vector<MotionCounters> probe_counters(probes.size());
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t j; (j = next.fetch_add(1)) < jobs.size() + probes.size();) {
-        if (cancelled()) break;
-        if (j < jobs.size()) {
-          results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
-                                      options_.measure_discretisation);
-        } else {
-          const Probe& p = probes[j - jobs.size()];
+    parallel_for(
+        jobs.size() + probes.size(), options_.threads, [&] { return cancelled(); },
+        [&](size_t j) {
+          if (j < jobs.size()) {
+            results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
+                                        options_.measure_discretisation);
+            return;
+          }
+          const size_t k = j - jobs.size();
+          const Probe& p = probes[k];
           const State& st = graph_.states[p.state];
-          probed[j - jobs.size()] =
-              p.pivot < 0 ? probe_for_contact(scene_, st.pose, st.contacts, p.vector,
-                                              probe_counters[j - jobs.size()])
-                          : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot, p.vector,
-                                              probe_counters[j - jobs.size()]);
-        }
-      }
-    };
-    const int threads =
-        std::max(1, std::min<int>(options_.threads, jobs.size() + probes.size()));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+          probed[k] = p.pivot < 0 ? probe_for_contact(scene_, st.pose, st.contacts, p.vector,
+                                                      probe_counters[k])
+                                  : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot,
+                                                      p.vector, probe_counters[k]);
+        });
     if (cancelled()) break;
 
     // Merge in job order: deterministic whatever the thread count.
@@ -974,29 +960,21 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
             {static_cast<int>(id), static_cast<int>(k), std::move(h), std::move(wanted)});
       }
   std::vector<TryResult> results(jobs.size());
-  std::atomic<size_t> next{0}, done{0};
-  // Only the calling thread reports (listeners are called from it alone).
-  auto worker = [&](bool reports) {
-    for (size_t j; (j = next.fetch_add(1)) < jobs.size();) {
-      if (cancelled()) break;
-      State from = graph_.states[jobs[j].id];
-      from.pose = members_[jobs[j].id][jobs[j].k].pose;
-      from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
-      results[j] =
-          try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation, &jobs[j].wanted);
-      const size_t finished = ++done;
-      if (reports)
+  // One thread: nothing to run ahead, the walk runs each motion it needs (and only those).
+  if (std::min<int>(options_.threads, static_cast<int>(jobs.size())) < 2) return {};
+  parallel_for(
+      jobs.size(), options_.threads, [&] { return cancelled(); },
+      [&](size_t j) {
+        State from = graph_.states[jobs[j].id];
+        from.pose = members_[jobs[j].id][jobs[j].k].pose;
+        from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
+        results[j] = try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation,
+                                    &jobs[j].wanted);
+      },
+      [&](size_t finished) {
         report_phase(Phase::Retries, "motions run ahead", static_cast<int>(finished),
                      static_cast<int>(jobs.size()));
-    }
-  };
-  const int threads = std::max(1, std::min<int>(options_.threads, jobs.size()));
-  // One thread: nothing to run ahead, the walk runs each motion it needs (and only those).
-  if (threads < 2) return {};
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, false);
-  worker(true);
-  for (auto& t : pool) t.join();
+      });
   std::map<std::tuple<int, int, ContactFormation>, TryResult> out;
   if (cancelled()) return out;
   for (size_t j = 0; j < jobs.size(); ++j)
