@@ -30,6 +30,7 @@ struct Args {
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   bool quiet = false;
   bool project_upward = false;
+  bool no_mirror_images = false;
 };
 
 void run(const Args& a) {
@@ -39,6 +40,7 @@ void run(const Args& a) {
   GeneratorOptions opt;
   opt.threads = a.threads;
   opt.project_upward = a.project_upward;
+  opt.mirror_images = !a.no_mirror_images;
   ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
   progress.finish();
@@ -84,6 +86,9 @@ void setup(CLI::App& cli) {
   cmd->add_flag("--project-upward", args->project_upward,
                 "Also look for the states one contact above each state by projecting turned "
                 "witnesses (GeneratorOptions::project_upward)");
+  cmd->add_flag("--no-mirror-images", args->no_mirror_images,
+                "Leave out the mirror images of the states that no state's region holds "
+                "(GeneratorOptions::mirror_images)");
   cmd->callback([args] { run(*args); });
 }
 

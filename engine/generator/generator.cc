@@ -329,15 +329,12 @@ enum class Phase {
   MissingLinks,  // hypotheses tried again from waypoints toward a CF's states
   Relabelling,   // the states and links the solids' relabelling half turns imply
   Projections,   // the upward projections: one contact more, from turned witnesses
+  Mirror,        // the states and links the solids' mirror planes imply
 };
-constexpr const char* kPhaseNames[] = {"seeds",
-                                       "transition motions",
-                                       "upward probes",
-                                       "state identity",
-                                       "retries from other witnesses",
-                                       "missing-link retries",
-                                       "relabelling",
-                                       "upward projections"};
+constexpr const char* kPhaseNames[] = {
+    "seeds",          "transition motions",           "upward probes",
+    "state identity", "retries from other witnesses", "missing-link retries",
+    "relabelling",    "upward projections",           "mirror images"};
 constexpr int kPhases = sizeof(kPhaseNames) / sizeof(kPhaseNames[0]);
 
 class Builder {
@@ -359,6 +356,9 @@ class Builder {
   int find_state(const ContactFormation& cf, const Pose& pose,
                  const std::vector<PointContact>& contacts);
   int representative(int id);
+  // Whether two poses are one (positions within tol.distinct_points, orientations within
+  // kSamePoseAngle): the same witness reached twice.
+  bool same_pose(const Pose& a, const Pose& b) const;
   // Renumbers the states after the unions of find_state: one state per class (the lowest
   // id's witness), links and candidates redirected, duplicate links dropped.
   void merge_united_states();
@@ -393,9 +393,19 @@ class Builder {
   // Each state's witness under each relabelling half turn, re-detected; nullopt where the
   // re-detection does not touch as the state does (left out rather than trusted).
   std::vector<std::optional<Discovery>> relabelled_images(int id);
-  // Each LN link's image under the relabelling half turns, between the states the images of
-  // its ends join (the turned motion is a proof: the same motion under the other labelling).
+  // Each LN link's image under the relabelling half turns and the mirror (mirror_image),
+  // between the states the images of its ends join (the turned or reflected motion is a proof:
+  // the same motion under the other labelling, or the whole scene reflected).
   void add_relabelled_links();
+  // The mirror image of state `id`'s witness (symmetry.h, mirrored: by the first mirror plane
+  // of each solid), re-detected exactly; nullopt when a solid has no mirror plane or the image
+  // does not touch as the state does. A configuration and its image may lie in different
+  // regions of one CF (Example 1's ellipsoid lying across the dish with its rim contact on
+  // one side of its wall contact or the other): then the image is a state of its own.
+  std::optional<Discovery> mirror_image(int id);
+  // Each state's mirror image that no state's region holds (find_state: no join) is added
+  // and grown. Returns whether any was.
+  bool add_mirrored_states();
   // Where the upward probes of a state push A's centre: toward each element of B that none
   // of its contacts touches (a face's interior point, an edge's middle, a vertex).
   std::vector<Eigen::Vector3d> probe_goals(const State& s) const;
@@ -454,6 +464,8 @@ class Builder {
   // motions that ended there), a roadmap that later witnesses may join at any of its points;
   // its region signature; its class in the union of states proved to be one.
   std::vector<std::vector<Witness>> members_;
+  // The states whose mirror images add_mirrored_states has placed: ids below this.
+  size_t mirrored_upto_ = 0;
   std::vector<RegionSignature> signatures_;
   // (state, witness, CF) already retried by retry_from_other_witnesses.
   std::set<std::tuple<int, int, ContactFormation>> retried_;
@@ -466,6 +478,14 @@ class Builder {
 // of transitions into it arrive from each neighbouring region), few enough that a failed
 // join costs a bounded number of motions.
 constexpr size_t kMaxMembersPerState = 4;
+// Orientations closer than this (radians) are one, with positions within tol.distinct_points:
+// round-off of a reflection applied twice is ~1e-15.
+constexpr double kSamePoseAngle = 1e-9;
+
+bool Builder::same_pose(const Pose& a, const Pose& b) const {
+  return (a.position - b.position).norm() <= scene_.tol.distinct_points &&
+         a.quaternion.angularDistance(b.quaternion) <= kSamePoseAngle;
+}
 
 int Builder::representative(int id) {
   while (united_[id] != id) id = united_[id] = united_[united_[id]];
@@ -476,6 +496,12 @@ int Builder::find_state(const ContactFormation& cf, const Pose& pose,
                         const std::vector<PointContact>& contacts) {
   PhaseScope phase(*this, Phase::Identity);
   const RegionSignature sig = region_signature(contacts);
+  // A pose a state holds already (a mirror image's image is the witness itself): every join
+  // from it was tried when it was placed.
+  for (const State& s : graph_.states)
+    if (s.cf == cf && signatures_[s.id] == sig)
+      for (const Witness& m : members_[s.id])
+        if (same_pose(m.pose, pose)) return s.id;
   int found = -1;
   for (const State& s : graph_.states) {
     if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
@@ -818,23 +844,62 @@ bool Builder::add_relabelled_states() {
 }
 
 void Builder::add_relabelled_links() {
-  PhaseScope phase(*this, Phase::Relabelling);
-  if (symmetry_.relabelling_A.empty() && symmetry_.relabelling_B.empty()) return;
+  const bool relabelling = !symmetry_.relabelling_A.empty() || !symmetry_.relabelling_B.empty();
+  const bool mirror =
+      options_.mirror_images && !symmetry_.mirrors_A.empty() && !symmetry_.mirrors_B.empty();
+  if (!relabelling && !mirror) return;
   const int n = static_cast<int>(graph_.states.size());
-  // image[id][k]: the state the k-th image of id's witness joins, or -1.
+  // image[id][k]: the state the k-th image of id's witness joins, or -1; the mirror image last.
   std::vector<std::vector<int>> image(n);
-  for (int id = 0; id < n && !cancelled(); ++id)
-    for (std::optional<Discovery>& d : relabelled_images(id))
+  for (int id = 0; id < n && !cancelled(); ++id) {
+    {
+      PhaseScope phase(*this, Phase::Relabelling);
+      for (std::optional<Discovery>& d : relabelled_images(id))
+        image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+    }
+    if (mirror) {
+      PhaseScope phase(*this, Phase::Mirror);
+      const std::optional<Discovery> d = mirror_image(id);
       image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+    }
+  }
   if (cancelled()) return;
   const std::vector<Link> links = graph_.links;
   for (const Link& l : links) {
     if (l.kind != LinkKind::LN) continue;
     for (size_t k = 0; k < image[l.from].size(); ++k) {
       const int from = image[l.from][k], to = image[l.to][k];
-      if (from >= 0 && to >= 0) add_link(from, to, l.motion + ", relabelled");
+      const bool mirrored = mirror && k + 1 == image[l.from].size();
+      if (from >= 0 && to >= 0)
+        add_link(from, to, l.motion + (mirrored ? ", mirrored" : ", relabelled"));
     }
   }
+}
+
+std::optional<Discovery> Builder::mirror_image(int id) {
+  if (symmetry_.mirrors_A.empty() || symmetry_.mirrors_B.empty()) return std::nullopt;
+  const State& st = graph_.states[id];
+  const Pose Y = mirrored(st.pose, symmetry_.mirrors_A[0], symmetry_.mirrors_B[0]);
+  ++counters_.detections;
+  ContactReport rep = detect_contacts(scene_, Y);
+  // The same configuration reflected: it touches as the state does.
+  if (rep.penetrating() || rep.contacts.size() != st.contacts.size()) return std::nullopt;
+  return Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)};
+}
+
+bool Builder::add_mirrored_states() {
+  PhaseScope phase(*this, Phase::Mirror);
+  bool added = false;
+  const int n = static_cast<int>(graph_.states.size());
+  for (int id = static_cast<int>(mirrored_upto_); id < n && !cancelled(); ++id) {
+    mirrored_upto_ = id + 1;  // a state's witness never changes: its image is placed once
+    const std::optional<Discovery> image = mirror_image(id);
+    if (!image || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
+    if (find_state(image->cf, image->pose, image->contacts) >= 0) continue;
+    grow(add_state(image->cf, image->pose, image->contacts, false, graph_.states[id].depth));
+    added = true;
+  }
+  return added;
 }
 
 void Builder::merge_united_states() {
@@ -1120,7 +1185,10 @@ StateGraph Builder::run() {
     if (!cancelled()) add_relabelled_states();
     if (cancelled()) break;
     if (graph_.states.size() == states && discoveries_.size() == found) {
-      // Nothing new: then the states above each state that no motion or probe met.
+      // Nothing new: then the mirror images no state's region holds (after the growth, so
+      // that every state the motions reach is found first, from its own side), and the
+      // states above each state that no motion or probe met.
+      if (options_.mirror_images && add_mirrored_states()) continue;
       if (options_.project_upward && project_upward()) continue;
       break;
     }

@@ -27,11 +27,16 @@ struct GeneratorOptions {
   // met: its witness, turned about A's centre in kUpwardTurns ways (generator.cc), projected
   // onto each CF that adds one PtC to the state's and that the graph does not have; each new
   // state found seeds its own LN graph. Off by default: it finds Example 1's
-  // {(fA-e1, 2), (fA-f1, 1)} in every frame tried, but in B's moved frames the transitions from
-  // that state end at {(fA-e1, 1), (fA-f1, 1)} witnesses that no join proves one with the
-  // state's first witness (a duplicate state), and it costs Example 2 a third more time for
-  // nothing new (docs/paper-comparison.md, session 16).
+  // {(fA-e1, 2), (fA-f1, 1)} in both hands and in every frame tried (with mirror_images, the
+  // same 11 states), but the moved frames' links still differ by one pair, and it costs
+  // Example 2 a third more time and the three-sphere lens nine times, for nothing new
+  // (docs/paper-comparison.md, sessions 16 and 17).
   bool project_upward = false;
+  // When both solids have a plane of mirror symmetry (symmetry.h), add the mirror image of
+  // each state's witness that no state's region holds, as a state of its own, and each link's
+  // image: a configuration and its mirror image may lie in different regions of one CF
+  // (Example 1's ellipsoid across the dish, wall contact left or right of its rim contact).
+  bool mirror_images = true;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
   // Length of one small motion step relative to the scene's length scale; 0 keeps the scene's

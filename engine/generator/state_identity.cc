@@ -136,6 +136,8 @@ SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
   s.half_turns_B = half_turn_axes(scene.B, scene.tol, s.B);
   s.relabelling_A = relabelling_half_turns(scene.A, scene.tol, s.A);
   s.relabelling_B = relabelling_half_turns(scene.B, scene.tol, s.B);
+  s.mirrors_A = mirror_planes(scene.A, scene.tol, s.A);
+  s.mirrors_B = mirror_planes(scene.B, scene.tol, s.B);
   return s;
 }
 

@@ -46,6 +46,8 @@ struct SceneSymmetry {
   std::vector<SymmetryAxis> half_turns_B;  // in B's frame
   // Half turns that exchange elements (relabelling_half_turns), in each solid's frame.
   std::vector<SymmetryAxis> relabelling_A, relabelling_B;
+  // Planes of mirror symmetry (mirror_planes), in each solid's frame.
+  std::vector<MirrorPlane> mirrors_A, mirrors_B;
   static SceneSymmetry of(const SceneGeometry& scene);
 };
 

@@ -3,6 +3,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace pcsg {
@@ -92,72 +93,84 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
 
 namespace {
 
+// Whether the affine map `image` maps the solid onto itself: every surface onto a surface
+// (checked on the grid `points`, to tol.symmetry_relative) and every face, edge and vertex
+// onto one (one surface may hold several patches, two surfaces several curves). nullopt when
+// it does not; else whether any element lands on another (a relabelling).
+template <typename Map>
+std::optional<bool> maps_onto_itself(const Solid& S, const Tolerances& tol,
+                                     const std::vector<Eigen::Vector3d>& points, Map&& image_of) {
+  const int n_surfaces = static_cast<int>(S.surfaces.size());
+  // Each surface's image: the first surface that the mapped polynomial equals.
+  std::vector<int> image(n_surfaces, -1);
+  for (int i = 0; i < n_surfaces; ++i) {
+    const Polynomial& g = S.surfaces[i];
+    for (int j = 0; j < n_surfaces && image[i] < 0; ++j) {
+      double scale = 0, worst = 0;
+      for (const Eigen::Vector3d& p : points) {
+        const double v = g.value(p);
+        scale = std::max(scale, std::abs(v));
+        worst = std::max(worst, std::abs(S.surfaces[j].value(image_of(p)) - v));
+      }
+      if (worst <= tol.symmetry_relative * scale) image[i] = j;
+    }
+    if (image[i] < 0) return std::nullopt;
+  }
+  const double near = tol.distinct_points;
+  bool moved = false;
+  for (size_t f = 0; f < S.faces.size(); ++f) {
+    const int to = S.face_at(image[S.faces[f].surface], image_of(S.faces[f].interior_point), near);
+    if (to < 0) return std::nullopt;
+    moved = moved || to != static_cast<int>(f);
+  }
+  for (size_t e = 0; e < S.edges.size(); ++e) {
+    const Edge& E = S.edges[e];
+    if (E.samples.empty()) continue;
+    const Eigen::Vector3d q = image_of(E.samples[E.samples.size() / 2].point);
+    int to = S.edge_at(image[E.surface1], image[E.surface2], q, near);
+    if (to < 0) to = S.edge_at(image[E.surface2], image[E.surface1], q, near);
+    if (to < 0) return std::nullopt;
+    moved = moved || to != static_cast<int>(e);
+  }
+  for (size_t v = 0; v < S.vertices.size(); ++v) {
+    const Eigen::Vector3d q = image_of(S.vertices[v].point);
+    int to = -1;
+    for (size_t w = 0; w < S.vertices.size() && to < 0; ++w)
+      if ((S.vertices[w].point - q).norm() <= near) to = static_cast<int>(w);
+    if (to < 0) return std::nullopt;
+    moved = moved || to != static_cast<int>(v);
+  }
+  return moved;
+}
+
+// The candidate centres: the solid's origin and its box centre.
+std::vector<Eigen::Vector3d> candidate_centres(const Solid& S, const Tolerances& tol) {
+  std::vector<Eigen::Vector3d> centres = {Eigen::Vector3d::Zero()};
+  if (S.bbox.center().norm() > tol.distinct_points) centres.push_back(S.bbox.center());
+  return centres;
+}
+
 // The half turns about the candidate axes (the coordinate axes through the solid's origin and
 // through its box centre; those along `revolution` left out, the continuous turn covers them)
-// that map the solid onto itself: every surface onto a surface (checked on a grid, to
-// tol.symmetry_relative) and every face, edge and vertex onto one. `relabelling` picks those
-// that exchange some elements (else those that map every element onto itself).
+// that map the solid onto itself. `relabelling` picks those that exchange some elements (else
+// those that map every element onto itself).
 std::vector<SymmetryAxis> half_turns(const Solid& S, const Tolerances& tol,
                                      const std::optional<SymmetryAxis>& revolution,
                                      bool relabelling) {
   std::vector<SymmetryAxis> out;
   if (S.surfaces.empty() || S.bbox.isEmpty()) return out;
   const std::vector<Eigen::Vector3d> points = box_grid(S);
-  std::vector<Eigen::Vector3d> centres = {Eigen::Vector3d::Zero()};
-  if (S.bbox.center().norm() > tol.distinct_points) centres.push_back(S.bbox.center());
-  const int n_surfaces = static_cast<int>(S.surfaces.size());
-  for (const Eigen::Vector3d& c : centres)
+  for (const Eigen::Vector3d& c : candidate_centres(S, tol))
     for (int a = 0; a < 3; ++a) {
       SymmetryAxis axis;
       axis.point = c;
       axis.direction = Eigen::Vector3d::Unit(a);
       if (revolution && revolution->direction.cross(axis.direction).norm() < 1e-6) continue;
       const Eigen::Matrix3d R = rotation_about(axis.direction, M_PI);
-      auto turned = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); };
-      // Each surface's image: the first surface that the turned polynomial equals.
-      std::vector<int> image(n_surfaces, -1);
-      bool ok = true;
-      for (int i = 0; ok && i < n_surfaces; ++i) {
-        const Polynomial& g = S.surfaces[i];
-        for (int j = 0; j < n_surfaces && image[i] < 0; ++j) {
-          double scale = 0, worst = 0;
-          for (const Eigen::Vector3d& p : points) {
-            const double v = g.value(p);
-            scale = std::max(scale, std::abs(v));
-            worst = std::max(worst, std::abs(S.surfaces[j].value(turned(p)) - v));
-          }
-          if (worst <= tol.symmetry_relative * scale) image[i] = j;
-        }
-        ok = image[i] >= 0;
-      }
-      // Each face, edge and vertex onto one (one surface may hold several patches, two
-      // surfaces several curves); `moved` when any lands on another.
-      const double near = tol.distinct_points;
-      bool moved = false;
-      for (size_t f = 0; ok && f < S.faces.size(); ++f) {
-        const int to =
-            S.face_at(image[S.faces[f].surface], turned(S.faces[f].interior_point), near);
-        ok = to >= 0;
-        moved = moved || to != static_cast<int>(f);
-      }
-      for (size_t e = 0; ok && e < S.edges.size(); ++e) {
-        const Edge& E = S.edges[e];
-        if (E.samples.empty()) continue;
-        const Eigen::Vector3d q = turned(E.samples[E.samples.size() / 2].point);
-        int to = S.edge_at(image[E.surface1], image[E.surface2], q, near);
-        if (to < 0) to = S.edge_at(image[E.surface2], image[E.surface1], q, near);
-        ok = to >= 0;
-        moved = moved || to != static_cast<int>(e);
-      }
-      for (size_t v = 0; ok && v < S.vertices.size(); ++v) {
-        const Eigen::Vector3d q = turned(S.vertices[v].point);
-        int to = -1;
-        for (size_t w = 0; w < S.vertices.size() && to < 0; ++w)
-          if ((S.vertices[w].point - q).norm() <= near) to = static_cast<int>(w);
-        ok = to >= 0;
-        moved = moved || to != static_cast<int>(v);
-      }
-      if (ok && moved == relabelling) out.push_back(axis);
+      const std::optional<bool> moved = maps_onto_itself(
+          S, tol, points,
+          [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); });
+      if (moved && *moved == relabelling) out.push_back(axis);
     }
   return out;
 }
@@ -172,6 +185,43 @@ std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
 std::vector<SymmetryAxis> relabelling_half_turns(const Solid& S, const Tolerances& tol,
                                                  const std::optional<SymmetryAxis>& revolution) {
   return half_turns(S, tol, revolution, true);
+}
+
+std::vector<MirrorPlane> mirror_planes(const Solid& S, const Tolerances& tol,
+                                       const std::optional<SymmetryAxis>& revolution) {
+  std::vector<MirrorPlane> candidates, out;
+  if (S.surfaces.empty() || S.bbox.isEmpty()) return out;
+  // A solid of revolution: the planes through its axis first (every one is a mirror when one
+  // is; a coordinate direction picks it), then the coordinate planes.
+  if (revolution)
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::Vector3d n = revolution->direction.cross(Eigen::Vector3d::Unit(a));
+      if (n.norm() > 0.5) candidates.push_back({revolution->point, n.normalized()});
+    }
+  for (const Eigen::Vector3d& c : candidate_centres(S, tol))
+    for (int a = 0; a < 3; ++a) candidates.push_back({c, Eigen::Vector3d::Unit(a)});
+  const std::vector<Eigen::Vector3d> points = box_grid(S);
+  for (const MirrorPlane& m : candidates) {
+    bool known = false;  // the same plane twice (a candidate centre on another's plane)
+    for (const MirrorPlane& o : out)
+      known = known || (o.normal.cross(m.normal).norm() < 1e-9 &&
+                        std::abs(o.normal.dot(m.point - o.point)) <= tol.distinct_points);
+    if (known) continue;
+    if (maps_onto_itself(S, tol, points, [&](const Eigen::Vector3d& p) { return m.reflect(p); }))
+      out.push_back(m);
+  }
+  return out;
+}
+
+Pose mirrored(const Pose& X, const MirrorPlane& in_A, const MirrorPlane& in_B) {
+  // X' = M_B X M_A, with M(p) = L p + (c - L c) and L = I - 2 n n^T for each plane.
+  const Eigen::Matrix3d LA = in_A.linear(), LB = in_B.linear();
+  const Eigen::Matrix3d R = X.quaternion.toRotationMatrix();
+  const Eigen::Vector3d a = in_A.point - LA * in_A.point, b = in_B.point - LB * in_B.point;
+  Pose Y;
+  Y.quaternion = Eigen::Quaterniond(Eigen::Matrix3d(LB * R * LA)).normalized();
+  Y.position = LB * (R * a + X.position) + b;
+  return Y;
 }
 
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle) {

@@ -45,6 +45,32 @@ std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
 std::vector<SymmetryAxis> relabelling_half_turns(const Solid& S, const Tolerances& tol,
                                                  const std::optional<SymmetryAxis>& revolution);
 
+// A plane of mirror symmetry, in the solid's own frame.
+struct MirrorPlane {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit
+  Eigen::Matrix3d linear() const {
+    return Eigen::Matrix3d::Identity() - 2 * normal * normal.transpose();
+  }
+  Eigen::Vector3d reflect(const Eigen::Vector3d& p) const {
+    return p - 2 * normal.dot(p - point) * normal;
+  }
+};
+
+// The planes whose reflection maps the solid onto itself (every surface onto a surface and
+// every face, edge and vertex onto one, checked like the half turns). Candidates: for a solid
+// of revolution, planes through its axis; the coordinate planes through the solid's origin and
+// through its box centre. Example 1's ellipsoid has its three principal planes, the dish the
+// planes through its axis.
+std::vector<MirrorPlane> mirror_planes(const Solid& S, const Tolerances& tol,
+                                       const std::optional<SymmetryAxis>& revolution);
+
+// The mirror image of the configuration X: the scene reflected in B's plane `in_B`, A's points
+// relabelled by its reflection `in_A` so that the result is a rigid placement again:
+// X' = M_B X M_A. A lies where M_B puts X's A (M_A maps A onto itself), so X' touches B at
+// the mirror images of X's contacts, on the images of its elements.
+Pose mirrored(const Pose& X, const MirrorPlane& in_A, const MirrorPlane& in_B);
+
 // The pose reached by turning A about B's axis `axis_B` by `angle` (radians): X' = R X.
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle);
 // The pose reached by turning A about its own axis `axis_A` by `angle`: A's points move, B's

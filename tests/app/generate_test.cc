@@ -40,7 +40,7 @@ TEST(GenerateCommand, DefaultThreadsGiveTheOneThreadGraph) {
   const ExeRun b = run_pcsg("generate -q " + example1() + " -o " + all.string());
   ASSERT_EQ(b.exit_code, 0) << b.out;
   EXPECT_EQ(graph_without_time(one).dump(), graph_without_time(all).dump());
-  EXPECT_NE(b.out.find("8 states"), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find("9 states"), std::string::npos) << b.out;
 }
 
 // --project-upward sets GeneratorOptions::project_upward: Example 1 then also holds the
@@ -49,11 +49,23 @@ TEST(GenerateCommand, ProjectUpwardFlagAddsExample1sThreeContactState) {
   const fs::path dir = fresh_dir("upward");
   const ExeRun r = run_pcsg("generate -q --project-upward " + example1() + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("9 states"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("11 states"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("{(fA-e1, 2), (fA-f1, 1)}"), std::string::npos) << r.out;
   EXPECT_GT(graph_without_time(dir)["stats"]["collision_queries_by_phase"]["upward projections"]
                 .get<long>(),
             0);
+}
+
+// --no-mirror-images clears GeneratorOptions::mirror_images: Example 1 then holds one hand of
+// {(fA-e1, 1), (fA-f1, 1)} (8 states, as before session 17) and asks no query for images.
+TEST(GenerateCommand, NoMirrorImagesFlagLeavesOutTheOtherHand) {
+  const fs::path dir = fresh_dir("nomirror");
+  const ExeRun r = run_pcsg("generate -q --no-mirror-images " + example1() + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("8 states"), std::string::npos) << r.out;
+  EXPECT_EQ(
+      graph_without_time(dir)["stats"]["collision_queries_by_phase"]["mirror images"].get<long>(),
+      0);
 }
 
 TEST(GenerateCommand, RejectsAThreadCountOutOfRange) {

@@ -152,7 +152,12 @@ TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
                   "Session 16: with GeneratorOptions::project_upward (off by default, "
                   "generator.h) the original holds it too, 9 states with the same CFs as the "
                   "swapped run's, and 38 links against its 36 (the pair "
-                  "{(fA-e1, 2), (fA-f1, 1)} -- {(fA-f1, 2)} only in the original).";
+                  "{(fA-e1, 2), (fA-f1, 1)} -- {(fA-f1, 2)} only in the original). "
+                  "Session 17: with the mirror images (GeneratorOptions::mirror_images) the "
+                  "swapped run holds both hands of {(fA-e1, 1), (fA-f1, 1)} and of the 3-contact "
+                  "state, 11 states and 58 links, and so does the original with "
+                  "project_upward (the same states and distinct links between CFs); by default "
+                  "the original holds 9 (no 3-contact state).";
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
   expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
 }

@@ -146,6 +146,69 @@ TEST(Symmetry, RelabellingHalfTurnsOfTheShippedScenes) {
   EXPECT_EQ(ex2.B.element_name(b.contacts[0].b), "f2");
 }
 
+// Planes of mirror symmetry: the ellipsoid's three principal planes; the bowl's planes
+// through its axis (both coordinate planes holding z are found, no more); the lens's too, and
+// its equatorial plane (which exchanges its caps). Moving B moves its planes with it.
+TEST(Symmetry, MirrorPlanesOfTheShippedScenes) {
+  const SceneGeometry ex1 = scene("example1.yaml"), ex2 = scene("example2.yaml");
+  const SceneSymmetry s1 = SceneSymmetry::of(ex1);
+  ASSERT_EQ(s1.mirrors_A.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(std::abs(s1.mirrors_A[k].normal.dot(Eigen::Vector3d::Unit(k))), 1, 1e-12);
+    EXPECT_LE(s1.mirrors_A[k].point.norm(), ex1.tol.distinct_points);
+  }
+  ASSERT_EQ(s1.mirrors_B.size(), 2u);
+  for (const MirrorPlane& m : s1.mirrors_B) {
+    EXPECT_NEAR(m.normal.z(), 0, kAxisTolerance);  // the plane holds B's axis, z
+    EXPECT_LE(m.point.head<2>().norm(), kAxisTolerance * ex1.tol.length_scale);
+  }
+  EXPECT_EQ(SceneSymmetry::of(ex2).mirrors_A.size(), 3u);
+  // B moved rigidly: its two planes still hold its (moved) axis.
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  Pose X;
+  X.position = {3.0, -2.0, 5.0};
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 2).normalized()));
+  const SceneGeometry moved = build_scene_geometry(moved_scene(spec, X));
+  const std::vector<MirrorPlane> planes = SceneSymmetry::of(moved).mirrors_B;
+  ASSERT_EQ(planes.size(), 2u);
+  for (const MirrorPlane& m : planes) {
+    EXPECT_NEAR(m.normal.dot(X.rotate({0, 0, 1})), 0, kAxisTolerance);
+    EXPECT_NEAR(m.normal.dot(m.point - X.position), 0, kAxisTolerance * moved.tol.length_scale);
+  }
+}
+
+// The mirror image of a configuration touches B at the mirror images of its contact points,
+// on the same elements, with nothing else: Example 1's witness of {(fA-e1, 1), (fA-f1, 1)}
+// (the ellipsoid across the dish, resting on the rim at one end and on the wall at the other).
+// Reflecting twice gives the pose back.
+TEST(Symmetry, MirroredWitnessTouchesAtTheMirroredPoints) {
+  const SceneGeometry ex1 = scene("example1.yaml");
+  const SceneSymmetry sym = SceneSymmetry::of(ex1);
+  ASSERT_FALSE(sym.mirrors_A.empty());
+  ASSERT_FALSE(sym.mirrors_B.empty());
+  const Pose w = parse_pose(
+      "-1.6051845970692638 0.062473738619869046 2.1463896956523372 0.32220403692657712 "
+      "-0.24932582355730321 0.7620407517878649 0.50330416738814643");
+  const ContactReport a = detect_contacts(ex1, w);
+  ASSERT_EQ(ContactFormation::of(a.contacts).str(ex1), "{(fA-e1, 1), (fA-f1, 1)}");
+  for (const MirrorPlane& in_A : sym.mirrors_A) {
+    const Pose m = mirrored(w, in_A, sym.mirrors_B[0]);
+    const ContactReport b = detect_contacts(ex1, m);
+    EXPECT_FALSE(b.penetrating());
+    ASSERT_EQ(b.contacts.size(), 2u);
+    for (const PointContact& c : a.contacts) {
+      const Eigen::Vector3d image = sym.mirrors_B[0].reflect(c.point_B);
+      bool found = false;
+      for (const PointContact& d : b.contacts)
+        found = found || (d.b == c.b && d.a == c.a && (d.point_B - image).norm() <= kSamePoint);
+      EXPECT_TRUE(found) << ex1.B.element_name(c.b);
+    }
+    const Pose back = mirrored(m, in_A, sym.mirrors_B[0]);
+    EXPECT_NEAR((back.position - w.position).norm(), 0, 1e-12 * ex1.tol.length_scale);
+    EXPECT_NEAR(back.quaternion.angularDistance(w.quaternion), 0, 1e-12);
+  }
+}
+
 // Two witnesses of {(fA-e1, 2)} (the ellipsoid across the rim) that Example 1's run reached
 // from {(fA-f1, 2)} and from {(fA-e1, 1), (fA-f1, 1)}: they differ by about a half turn about
 // the ellipsoid's long axis (z), and the joining test proves them one state by a travel
