@@ -125,7 +125,9 @@ void FigureWriter::renumber_transitions(const StateGraph& g) {
     if (d.index < 0 || d.index >= static_cast<int>(g.candidates.size())) continue;
     const Candidate& c = g.candidates[d.index];
     render::TransitionInfo& info = d.record.info;
-    const int to = info.feasible ? c.to : info.to;
+    // info.to is the candidate's target as streamed (replay_and_stream), whatever the replay's
+    // outcome: a feasible candidate whose replay fails still names its state, renumbered too.
+    const int to = c.to;
     const bool renumbered = c.from != info.from || to != info.to;
     info.from = c.from;
     info.to = to;

@@ -896,6 +896,20 @@ bool Builder::add_mirrored_states() {
     const std::optional<Discovery> image = mirror_image(id);
     if (!image || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
     if (find_state(image->cf, image->pose, image->contacts) >= 0) continue;
+    // The mirror reverses every crossing sign (state_identity.h), so an image with a crossing
+    // contact lies in another class (CF and region signature) than its source. When the graph
+    // holds a state of that class already, the image is taken to be in one of its regions,
+    // unjoined or not: joins of e-e-cross witnesses near the rims' touch fail often (measured:
+    // the lens tip on the dish tip's {(eA-e1, 1)} image, a third state of two signs). Only an
+    // image of its source's own class (no crossing contact: Example 1's two hands) is a state
+    // of its own when no join proves it one with a state.
+    const RegionSignature sig = region_signature(image->contacts);
+    if (!(image->cf == graph_.states[id].cf && sig == signatures_[id])) {
+      bool held = false;
+      for (const State& s : graph_.states)
+        held = held || (s.cf == image->cf && signatures_[s.id] == sig);
+      if (held) continue;
+    }
     grow(add_state(image->cf, image->pose, image->contacts, false, graph_.states[id].depth));
     added = true;
   }
