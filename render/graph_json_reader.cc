@@ -146,6 +146,12 @@ StateGraph read_graph_json(const std::string& path, const SceneGeometry& scene) 
     cand.attempts = c.value("attempts", 0);
     cand.crossing = c.value("crossing", std::string());
     if (c.contains("start")) cand.start = r.pose(c["start"], where + ", start");
+    if (c.contains("run")) {
+      const json& run = r.field(c, "run", where);
+      cand.run.start = r.integer(run, "start", where + ", run");
+      cand.run.plan = r.integer(run, "plan", where + ", run");
+      cand.run.variant = r.integer(run, "variant", where + ", run");
+    }
     g.candidates.push_back(std::move(cand));
   }
   if (root.contains("stats") && root["stats"].is_object())

@@ -284,6 +284,7 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
           const MotionOutcome& o = it->second;
           c.motion = o.motion;
           c.steps = o.steps;
+          c.run = {static_cast<int>(k), static_cast<int>(p), static_cast<int>(v)};
           if (o.feasible && region_signature(o.contacts) == sig) {
             c.feasible = true;
             out.outcome = o;
@@ -393,6 +394,11 @@ class Builder {
   // Each state's witness under each relabelling half turn, re-detected; nullopt where the
   // re-detection does not touch as the state does (left out rather than trusted).
   std::vector<std::optional<Discovery>> relabelled_images(int id);
+  // The configuration Y, an image of state id's witness under a symmetry, re-detected: nullopt
+  // unless it touches as the state does (no penetration, as many contacts).
+  std::optional<Discovery> image_at(int id, const Pose& Y);
+  // Whether a state of this class (CF and region signature) is held already.
+  bool class_held(const ContactFormation& cf, const RegionSignature& sig) const;
   // Each LN link's image under the relabelling half turns and the mirror (mirror_image),
   // between the states the images of its ends join (the turned or reflected motion is a proof:
   // the same motion under the other labelling, or the whole scene reflected).
@@ -802,6 +808,20 @@ void Builder::join_duplicate_states() {
   }
 }
 
+std::optional<Discovery> Builder::image_at(int id, const Pose& Y) {
+  ++counters_.detections;
+  ContactReport rep = detect_contacts(scene_, Y);
+  // The state's configuration moved by a symmetry: it touches as the state does.
+  if (rep.penetrating() || rep.contacts.size() != graph_.states[id].contacts.size())
+    return std::nullopt;
+  return Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)};
+}
+
+bool Builder::class_held(const ContactFormation& cf, const RegionSignature& sig) const {
+  return std::any_of(graph_.states.begin(), graph_.states.end(),
+                     [&](const State& s) { return s.cf == cf && signatures_[s.id] == sig; });
+}
+
 std::vector<std::optional<Discovery>> Builder::relabelled_images(int id) {
   const State& st = graph_.states[id];
   std::vector<Pose> turned;
@@ -810,16 +830,7 @@ std::vector<std::optional<Discovery>> Builder::relabelled_images(int id) {
   for (const SymmetryAxis& h : symmetry_.relabelling_B)
     turned.push_back(turned_about_B(st.pose, h, M_PI));
   std::vector<std::optional<Discovery>> images;
-  for (const Pose& Y : turned) {
-    ++counters_.detections;
-    ContactReport rep = detect_contacts(scene_, Y);
-    // The same configuration: it touches as the state does.
-    if (rep.penetrating() || rep.contacts.size() != st.contacts.size()) {
-      images.emplace_back();
-      continue;
-    }
-    images.push_back(Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)});
-  }
+  for (const Pose& Y : turned) images.push_back(image_at(id, Y));
   return images;
 }
 
@@ -831,11 +842,9 @@ bool Builder::add_relabelled_states() {
   for (int id = 0; id < n && !cancelled(); ++id) {
     for (std::optional<Discovery>& image : relabelled_images(id)) {
       if (!image) continue;
-      const RegionSignature sig = region_signature(image->contacts);
-      bool known = false;
-      for (const State& s : graph_.states)
-        known = known || (s.cf == image->cf && signatures_[s.id] == sig);
-      if (known || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
+      if (class_held(image->cf, region_signature(image->contacts)) ||
+          static_cast<int>(graph_.states.size()) >= options_.max_states)
+        continue;
       grow(add_state(image->cf, image->pose, image->contacts, false, graph_.states[id].depth));
       added = true;
     }
@@ -878,13 +887,8 @@ void Builder::add_relabelled_links() {
 
 std::optional<Discovery> Builder::mirror_image(int id) {
   if (symmetry_.mirrors_A.empty() || symmetry_.mirrors_B.empty()) return std::nullopt;
-  const State& st = graph_.states[id];
-  const Pose Y = mirrored(st.pose, symmetry_.mirrors_A[0], symmetry_.mirrors_B[0]);
-  ++counters_.detections;
-  ContactReport rep = detect_contacts(scene_, Y);
-  // The same configuration reflected: it touches as the state does.
-  if (rep.penetrating() || rep.contacts.size() != st.contacts.size()) return std::nullopt;
-  return Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)};
+  return image_at(id,
+                  mirrored(graph_.states[id].pose, symmetry_.mirrors_A[0], symmetry_.mirrors_B[0]));
 }
 
 bool Builder::add_mirrored_states() {
@@ -904,12 +908,9 @@ bool Builder::add_mirrored_states() {
     // image of its source's own class (no crossing contact: Example 1's two hands) is a state
     // of its own when no join proves it one with a state.
     const RegionSignature sig = region_signature(image->contacts);
-    if (!(image->cf == graph_.states[id].cf && sig == signatures_[id])) {
-      bool held = false;
-      for (const State& s : graph_.states)
-        held = held || (s.cf == image->cf && signatures_[s.id] == sig);
-      if (held) continue;
-    }
+    if (!(image->cf == graph_.states[id].cf && sig == signatures_[id]) &&
+        class_held(image->cf, sig))
+      continue;
     grow(add_state(image->cf, image->pose, image->contacts, false, graph_.states[id].depth));
     added = true;
   }
@@ -1262,24 +1263,38 @@ MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
   const State from = candidate_start(scene, state, candidate);
   MotionCounters counters;
   MotionOutcome last;
+  const std::vector<MotionVariant> variants = motion_variants();
+  const Candidate::Run& run = candidate.run;
   for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
     if (!(h.cf == candidate.cf)) continue;
     const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
     MotionStarts starts(scene, from, h);
+    auto replay = [&](const MotionStart& start, size_t p, size_t v) {
+      MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts, h.plan_options[p],
+                                              h.cf, variants[v], counters, observer);
+      o.motion = start.prefix + o.motion;
+      return o;
+    };
+    if (run.known()) {
+      // The very motion the generator reported.
+      if (static_cast<size_t>(run.start) >= starts.size() ||
+          static_cast<size_t>(run.plan) >= plans ||
+          static_cast<size_t>(run.variant) >= variants.size())
+        break;
+      const MotionStart& start = starts.at(run.start, counters);
+      if (!start.ok) break;
+      return replay(start, run.plan, run.variant);
+    }
+    // A graph that does not say which (older JSON): the first motion of the reported name.
     for (size_t k = 0; k < starts.size(); ++k) {
       const MotionStart& start = starts.at(k, counters);
       if (!start.ok) continue;
       for (size_t p = 0; p < plans; ++p)
-        for (const MotionVariant& v : motion_variants()) {
-          if (!variant_matters(v, h.plan_options[p])) continue;
-          // Replay only the motion the candidate reports (its last or successful one).
+        for (size_t v = 0; v < variants.size(); ++v) {
+          if (!variant_matters(variants[v], h.plan_options[p])) continue;
           MotionOutcome dry = run_transition_motion(scene, start.pose, start.contacts,
-                                                    h.plan_options[p], h.cf, v, counters);
-          if (start.prefix + dry.motion != candidate.motion) continue;
-          MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts,
-                                                  h.plan_options[p], h.cf, v, counters, observer);
-          o.motion = start.prefix + o.motion;
-          return o;
+                                                    h.plan_options[p], h.cf, variants[v], counters);
+          if (start.prefix + dry.motion == candidate.motion) return replay(start, p, v);
         }
     }
   }

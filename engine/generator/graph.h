@@ -42,6 +42,13 @@ struct Candidate {
   // The witness of `from` the motion started from, when it is not the state's own (the
   // retries start from other witnesses of the same region); replays start there too.
   std::optional<Pose> start;
+  // Which of the hypothesis's motions `motion` is (try_hypothesis): the index of its start
+  // (the witness, or one turned about a normal), its plan and its variant (motion_variants()).
+  // Several share a name; replays re-run exactly this one. -1 when unknown (older graphs).
+  struct Run {
+    int start = -1, plan = -1, variant = -1;
+    bool known() const { return start >= 0 && plan >= 0 && variant >= 0; }
+  } run;
 };
 
 struct GraphStats {

@@ -84,6 +84,8 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                        {"steps", c.steps}};
     if (!c.crossing.empty()) cj["crossing"] = c.crossing;
     if (c.start) cj["start"] = pose_json(*c.start);
+    if (c.run.known())
+      cj["run"] = {{"start", c.run.start}, {"plan", c.run.plan}, {"variant", c.run.variant}};
     if (c.feasible) cj["to"] = c.to;
     if (!c.feasible) cj["reason"] = c.reason;
     cands.push_back(cj);

@@ -1,6 +1,6 @@
 // graph.json read back (render/graph_json_reader.h): what `pcsg figures` and the viewer replay
 // from a stored graph must survive the round trip, the start witness of a retried candidate
-// (Candidate::start) included.
+// (Candidate::start) and which motion a candidate reports (Candidate::run) included.
 #include "render/graph_json_reader.h"
 
 #include <gtest/gtest.h>
@@ -28,6 +28,7 @@ TEST(GraphJsonReaderTest, CandidateStartWitnessSurvivesTheRoundTrip) {
   retried.start->position = {0.25, -1.5, 3.0};
   retried.start->quaternion =
       Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  retried.run = {2, 1, 4};
   g.candidates = {own, retried};
   const std::string path = ::testing::TempDir() + "/graph_round_trip.json";
   std::ofstream(path) << graph_to_json(g, scene);
@@ -39,6 +40,10 @@ TEST(GraphJsonReaderTest, CandidateStartWitnessSurvivesTheRoundTrip) {
   // 17 significant digits: the pose comes back to the last bits
   EXPECT_LT((back.candidates[1].start->position - retried.start->position).norm(), 1e-15);
   EXPECT_LT(back.candidates[1].start->quaternion.angularDistance(retried.start->quaternion), 1e-15);
+  EXPECT_FALSE(back.candidates[0].run.known()) << "no motion tried: no run written";
+  EXPECT_EQ(back.candidates[1].run.start, 2);
+  EXPECT_EQ(back.candidates[1].run.plan, 1);
+  EXPECT_EQ(back.candidates[1].run.variant, 4);
 }
 
 }  // namespace

@@ -55,6 +55,29 @@ void expect_links_consistent(const Generated& g) {
 
 // --- the torus ------------------------------------------------------------------------------
 
+// A feasible candidate replayed (the figures' transition frames, `pcsg figures`) must re-run
+// the generator's motion and arrive at its state. Several motions of a hypothesis share a name
+// (plans, starts); the torus's ({(fA-f3,1),(fA-e2,2)} -> {(fA-f3,2)}, "slidingA+rotation+
+// separation") collided at step 1 when the replay took the first of that name, until the
+// candidate said which one it was (Candidate::run).
+TEST(TorusGraph, EveryFeasibleCandidateReplaysToItsState) {
+  const Generated& g = torus();
+  int feasible = 0;
+  for (const Candidate& c : g.graph.candidates) {
+    if (!c.feasible || c.to < 0) continue;
+    ++feasible;
+    const std::string what = "candidate " + std::to_string(&c - g.graph.candidates.data()) +
+                             " from " + std::to_string(c.from) + " to " + c.cf.str(g.scene) + " (" +
+                             c.motion + ")";
+    ASSERT_TRUE(c.run.known()) << what;
+    const MotionOutcome o = replay_candidate(g.scene, g.graph.states[c.from], c, nullptr);
+    EXPECT_TRUE(o.feasible) << what << ": " << o.reason;
+    EXPECT_EQ(o.motion, c.motion) << what;
+    EXPECT_EQ(ContactFormation::of(o.contacts), g.graph.states[c.to].cf) << what;
+  }
+  EXPECT_GT(feasible, 0);
+}
+
 TEST(TorusGraph, WitnessesAreExactAndLinksConsistent) {
   const Generated& g = torus();
   ASSERT_FALSE(g.graph.states.empty());
