@@ -160,6 +160,8 @@ void run_scene(const Args& a, const std::string& scene_file, const std::string& 
               s.generation_seconds, total, folder.c_str());
   for (const std::string& why : s.skipped)
     std::printf("  not drawn (its replay failed): %s\n", why.c_str());
+  for (const std::string& why : s.disagreeing)
+    std::printf("  replay differs from the generation: %s\n", why.c_str());
   std::fflush(stdout);
 }
 

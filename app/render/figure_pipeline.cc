@@ -78,6 +78,7 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   start.start = from.contacts;
   start.frames = static_cast<int>(chosen.size());
   start.replayed_steps = static_cast<int>(frames.size());
+  start.generated_feasible = c.candidate.feasible;
   for (int i : chosen) start.poses.push_back(frames[i].pose);
   if (!out.push(std::move(start))) return false;
   for (std::size_t k = 0; k < chosen.size(); ++k) {

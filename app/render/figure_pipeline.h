@@ -23,6 +23,7 @@ struct TransitionStarted {
   std::vector<PointContact> start;  // the start state's contacts
   int frames = 0;
   int replayed_steps = 0;   // frames the replay produced (before the stride)
+  bool generated_feasible = false;  // the generator's verdict (info.feasible is the replay's)
   std::vector<Pose> poses;  // A's pose at every frame drawn: one framing for the sequence
 };
 struct TransitionFrameReady {

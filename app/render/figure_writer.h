@@ -41,6 +41,9 @@ struct FigureSummary {
   std::size_t states = 0, links = 0, candidates = 0, feasible = 0;
   int transitions = 0, frames = 0;   // drawn
   std::vector<std::string> skipped;  // candidates whose motion could not be replayed, and why
+  // Transitions whose replay ended otherwise than the generation's motion (feasible against
+  // failed, or the reverse): the frames do not show what the graph says.
+  std::vector<std::string> disagreeing;
   double generation_seconds = 0;
   GenerationProgress progress;  // the last reported
   bool finished = false;

@@ -1251,9 +1251,11 @@ StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& op
 }
 
 State candidate_start(const SceneGeometry& scene, const State& from, const Candidate& candidate) {
-  if (!candidate.start) return from;
+  const bool exact = std::all_of(from.contacts.begin(), from.contacts.end(),
+                                 [](const PointContact& c) { return c.jacobian.rows() > 0; });
+  if (!candidate.start && exact) return from;
   State s = from;
-  s.pose = *candidate.start;
+  if (candidate.start) s.pose = *candidate.start;
   s.contacts = detect_contacts(scene, s.pose).contacts;
   return s;
 }

@@ -75,11 +75,12 @@ StateGraph generate_graph(const SceneGeometry& scene, const GeneratorOptions& op
 std::vector<MotionVariant> motion_variants();
 
 // The state `from` at the witness the candidate's motion started from (Candidate::start, its
-// contacts re-detected there), or `from` itself when it started from the state's own witness.
+// contacts re-detected there), or `from` itself when it started from the state's own witness
+// (its contacts re-detected when they lack their conditions, as a graph read from JSON does).
 State candidate_start(const SceneGeometry& scene, const State& from, const Candidate& candidate);
 
-// Re-runs the motion that a candidate used (or the variants in order, for a failed one) with an
-// observer, for animations and frame-by-frame debugging. Deterministic.
+// Re-runs the motion that a candidate reports (Candidate::run; by its name for a graph without
+// it) with an observer, for animations and frame-by-frame debugging. Deterministic.
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,
                                const Candidate& candidate, const MotionObserver& observer);
 

@@ -250,6 +250,9 @@ TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
                              " --only transitions --size 160x120 --max-frames 3 --out ";
   const ExeRun r = run_pcsg("figures" + common + live.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
+  // Every replay ends as the generation's motion did (until the candidates named their motion,
+  // Candidate::run, one feasible candidate of the torus replayed into a collision).
+  EXPECT_EQ(r.out.find("replay differs"), std::string::npos) << r.out;
   const fs::path graph = live / "torus" / "graph.json";
   // an older run's transition in the folder drawn into: a drawing of every candidate removes it
   const fs::path stale = stored / "torus" / "transitions" / "99-fA-f1x1";
@@ -257,6 +260,7 @@ TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
   std::ofstream(stale / "frames.json") << "{}";
   const ExeRun again = run_pcsg("figures --graph " + graph.string() + common + stored.string());
   ASSERT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_EQ(again.out.find("replay differs"), std::string::npos) << again.out;
   EXPECT_FALSE(fs::exists(stale)) << "an older run's transition folder is kept";
   std::set<std::string> folders, want;
   for (const auto& d : fs::directory_iterator(live / "torus" / "transitions")) {
