@@ -79,6 +79,7 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   start.frames = static_cast<int>(chosen.size());
   start.replayed_steps = static_cast<int>(frames.size());
   start.generated_feasible = c.candidate.feasible;
+  start.replay_reached = reaches_target(scene, c.candidate, outcome);
   for (int i : chosen) start.poses.push_back(frames[i].pose);
   if (!out.push(std::move(start))) return false;
   for (std::size_t k = 0; k < chosen.size(); ++k) {

@@ -201,12 +201,14 @@ void FigureWriter::on(CandidateTried& e) {
 }
 
 void FigureWriter::on(TransitionStarted& e) {
-  if (e.generated_feasible != e.info.feasible)
+  if (e.generated_feasible != e.replay_reached)
     summary_.disagreeing.push_back(
         "candidate " + std::to_string(e.index) + " from " + std::to_string(e.info.from) + " to " +
         e.info.target_cf + " (" + e.info.motion + "): " +
-        (e.generated_feasible ? "feasible in the generation, the replay failed: " + e.info.reason
-                              : "failed in the generation, the replay arrived"));
+        (e.generated_feasible
+             ? "feasible in the generation, the replay did not reach it: " +
+                   (e.info.feasible ? "it arrives with other crossing signs" : e.info.reason)
+             : "failed in the generation, the replay arrived"));
   current_ = e;
   current_folder_ = transition_folder(e.info, e.index, folder_owners_);
   fs::create_directories(current_folder_);

@@ -1260,6 +1260,13 @@ State candidate_start(const SceneGeometry& scene, const State& from, const Candi
   return s;
 }
 
+bool reaches_target(const SceneGeometry& scene, const Candidate& candidate,
+                    const MotionOutcome& outcome) {
+  // (try_hypothesis writes a candidate's crossing as signature_text of the signature it wants)
+  return outcome.feasible &&
+         signature_text(scene, region_signature(outcome.contacts)) == candidate.crossing;
+}
+
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
                                const Candidate& candidate, const MotionObserver& observer) {
   const State from = candidate_start(scene, state, candidate);

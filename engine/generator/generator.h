@@ -79,6 +79,12 @@ std::vector<MotionVariant> motion_variants();
 // (its contacts re-detected when they lack their conditions, as a graph read from JSON does).
 State candidate_start(const SceneGeometry& scene, const State& from, const Candidate& candidate);
 
+// Whether a motion's outcome reaches the candidate's target as the generator requires: it
+// arrives, and with the candidate's crossing signs (Candidate::crossing; a motion that arrives
+// with the other signs is a failure of this candidate).
+bool reaches_target(const SceneGeometry& scene, const Candidate& candidate,
+                    const MotionOutcome& outcome);
+
 // Re-runs the motion that a candidate reports (Candidate::run; by its name for a graph without
 // it) with an observer, for animations and frame-by-frame debugging. Deterministic.
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& from,

@@ -74,6 +74,7 @@ TEST(TorusGraph, EveryFeasibleCandidateReplaysToItsState) {
     EXPECT_TRUE(o.feasible) << what << ": " << o.reason;
     EXPECT_EQ(o.motion, c.motion) << what;
     EXPECT_EQ(ContactFormation::of(o.contacts), g.graph.states[c.to].cf) << what;
+    EXPECT_TRUE(reaches_target(g.scene, c, o)) << what;
     // From the state as graph.json gives it (contacts without their conditions: the replay
     // re-detects them; until then it read past the ends of empty Jacobians).
     State bare = g.graph.states[c.from];
@@ -257,6 +258,28 @@ TEST(ThreeSpheresGraph, RetriedCandidatesReplayFromTheirOwnWitness) {
     EXPECT_EQ(ContactFormation::of(o.contacts), g.graph.states[c.to].cf) << what;
   }
   EXPECT_GT(retried, 0) << "the graph has no retried candidate: the test checks nothing";
+}
+
+// A candidate toward a rim-crossing CF wants one crossing sign (Candidate::crossing); a motion
+// that arrives with the other is its failure (try_hypothesis). Replayed, each such candidate
+// must end as the generation did by reaches_target: feasible ones reach their sign, failed ones
+// do not, also those whose reported motion arrives with the other sign (`pcsg figures` called
+// 31 of Example 2's "failed in the generation, the replay arrived" until it compared signs).
+TEST(ThreeSpheresGraph, CrossingCandidatesReplayAsTheyWereJudged) {
+  const Generated& g = three_spheres();
+  int signed_candidates = 0, other_sign = 0;
+  for (const Candidate& c : g.graph.candidates) {
+    if (c.crossing.empty()) continue;
+    ++signed_candidates;
+    const MotionOutcome o = replay_candidate(g.scene, g.graph.states[c.from], c, nullptr);
+    EXPECT_EQ(reaches_target(g.scene, c, o), c.feasible)
+        << "candidate " << &c - g.graph.candidates.data() << " (" << c.crossing << ", " << c.motion
+        << "): " << o.reason;
+    other_sign += !c.feasible && o.feasible;
+  }
+  EXPECT_GT(signed_candidates, 0);
+  EXPECT_GT(other_sign, 0) << "no failed candidate arrives with the other sign: the test checks "
+                              "only the plain failures";
 }
 
 }  // namespace
