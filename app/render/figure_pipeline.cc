@@ -71,15 +71,20 @@ bool replay_and_stream(const SceneGeometry& scene, const CandidateTried& c,
   start.info.from_cf = c.from.cf.str(scene);
   start.info.target_cf = c.candidate.cf.str(scene);
   start.info.motion = outcome.motion.empty() ? c.candidate.motion : outcome.motion;
-  start.info.feasible = outcome.feasible;
+  // Feasible as the generator judges it: a motion that arrives with the other crossing signs
+  // fails this candidate (reaches_target).
+  start.replay_reached = reaches_target(scene, c.candidate, outcome);
+  start.info.feasible = start.replay_reached;
   start.info.to = c.candidate.to;
   start.info.reason = outcome.reason;
+  if (outcome.feasible && !start.replay_reached)
+    start.info.reason = "arrives with the crossing " + crossing_text(scene, outcome.contacts) +
+                        ", not " + c.candidate.crossing;
   start.info.steps = outcome.steps;
   start.start = from.contacts;
   start.frames = static_cast<int>(chosen.size());
   start.replayed_steps = static_cast<int>(frames.size());
   start.generated_feasible = c.candidate.feasible;
-  start.replay_reached = reaches_target(scene, c.candidate, outcome);
   for (int i : chosen) start.poses.push_back(frames[i].pose);
   if (!out.push(std::move(start))) return false;
   for (std::size_t k = 0; k < chosen.size(); ++k) {

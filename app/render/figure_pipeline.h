@@ -23,8 +23,9 @@ struct TransitionStarted {
   std::vector<PointContact> start;  // the start state's contacts
   int frames = 0;
   int replayed_steps = 0;           // frames the replay produced (before the stride)
-  bool generated_feasible = false;  // the generator's verdict (info.feasible is the replay's)
-  bool replay_reached = false;      // the replay reached the target with its crossing signs
+  bool generated_feasible = false;  // the generator's verdict
+  bool replay_reached = false;      // the replay's: it reached the target with its crossing
+                                    // signs (info.feasible, shown in the header)
   std::vector<Pose> poses;          // A's pose at every frame drawn: one framing for the sequence
 };
 struct TransitionFrameReady {

@@ -206,8 +206,7 @@ void FigureWriter::on(TransitionStarted& e) {
         "candidate " + std::to_string(e.index) + " from " + std::to_string(e.info.from) + " to " +
         e.info.target_cf + " (" + e.info.motion + "): " +
         (e.generated_feasible
-             ? "feasible in the generation, the replay did not reach it: " +
-                   (e.info.feasible ? "it arrives with other crossing signs" : e.info.reason)
+             ? "feasible in the generation, the replay did not reach it: " + e.info.reason
              : "failed in the generation, the replay arrived"));
   current_ = e;
   current_folder_ = transition_folder(e.info, e.index, folder_owners_);

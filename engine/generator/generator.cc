@@ -285,7 +285,7 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
           c.motion = o.motion;
           c.steps = o.steps;
           c.run = {static_cast<int>(k), static_cast<int>(p), static_cast<int>(v)};
-          if (o.feasible && region_signature(o.contacts) == sig) {
+          if (reaches_target(scene, c, o)) {  // c.crossing is sig's text
             c.feasible = true;
             out.outcome = o;
             done = true;
@@ -1100,36 +1100,50 @@ void Builder::retry_missing_links() {
         return representative(l.from) == representative(id) && graph_.states[l.to].cf == h.cf;
       });
       if (targets.empty() || linked) continue;
-      // Halfway, then three quarters of the way, toward each state of the CF.
+      // From `from` (a pose of state id's region), the hypothesis toward h.cf; a link when it
+      // arrives in a state the graph has.
+      auto try_from = [&](const State& from) {
+        // the plans index the start's own contacts
+        for (const Hypothesis& hw : hypothesise_ln(scene_, from.contacts)) {
+          if (!(hw.cf == h.cf)) continue;
+          TryResult r = try_hypothesis(scene_, from, hw, options_.measure_discretisation);
+          counters_.merge(r.counters);
+          bool found = false;
+          for (Reached& t : r.targets) {
+            if (!t.candidate.feasible) continue;
+            const int to = find_state(h.cf, t.outcome.end, t.outcome.contacts);
+            if (to < 0) continue;
+            t.candidate.to = to;
+            t.candidate.start = from.pose;
+            graph_.candidates.push_back(t.candidate);
+            if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
+            add_link(id, to, t.candidate.motion);
+            found = true;
+          }
+          return found;
+        }
+        return false;
+      };
+      // First from the state's other witnesses (a state met from several sides keeps them:
+      // the needle in the dish reaches {(fA-e1, 1)} from across the rim first, and from there
+      // slides onto the dish wall only from the witness leaning on the rim inside).
       bool found = false;
-      for (int t : targets) {
+      for (size_t k = 1; k < members_[id].size() && !found; ++k) {
+        State from = graph_.states[id];
+        from.pose = members_[id][k].pose;
+        from.contacts = members_[id][k].contacts;
+        found = try_from(from);
+      }
+      // Then halfway, and three quarters of the way, toward each state of the CF.
+      for (size_t i = 0; i < targets.size() && !found; ++i) {
         for (double f : {0.5, 0.75}) {
-          const std::optional<Witness> w = waypoint(id, t, f);
+          const std::optional<Witness> w = waypoint(id, targets[i], f);
           if (!w) continue;
           State from = graph_.states[id];
           from.pose = w->pose;
           from.contacts = w->contacts;
-          // the plans index the waypoint's own contacts
-          for (const Hypothesis& hw : hypothesise_ln(scene_, from.contacts)) {
-            if (!(hw.cf == h.cf)) continue;
-            TryResult r = try_hypothesis(scene_, from, hw, options_.measure_discretisation);
-            counters_.merge(r.counters);
-            for (Reached& t : r.targets) {
-              if (!t.candidate.feasible) continue;
-              const int to = find_state(h.cf, t.outcome.end, t.outcome.contacts);
-              if (to < 0) continue;
-              t.candidate.to = to;
-              t.candidate.start = from.pose;
-              graph_.candidates.push_back(t.candidate);
-              if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
-              add_link(id, to, t.candidate.motion);
-              found = true;
-            }
-            break;
-          }
-          if (found) break;
+          if ((found = try_from(from))) break;
         }
-        if (found) break;
       }
     }
   }
@@ -1159,8 +1173,17 @@ StateGraph Builder::run() {
   }
   // Highest cardinality first: a local maximum's LN graph covers the states below it, so later
   // candidates already in the graph add nothing (Section IV: one seed per local maximum).
+  // The off-centre pushes' candidates wait until the graph is otherwise complete, and then
+  // seed only CFs it lacks: a seed of a CF the growth reaches anyway would grow the graph
+  // from other witnesses, and feasibility depends on the witness (mixed in by cardinality,
+  // they cost the torus's graph 2 of its 29 distinct CF links).
+  std::vector<SeedCandidate> off_centre;
   for (const SeedCandidate& sc : seeds) {
     if (cancelled()) break;
+    if (sc.off_centre) {
+      off_centre.push_back(sc);
+      continue;
+    }
     // An automatic candidate whose CF the graph already has adds a seed only for a separate
     // region, and a failed connectivity motion does not prove one; it is left out (a CF that
     // is new to the graph always seeds). Listed seeds are checked for connectivity.
@@ -1200,9 +1223,21 @@ StateGraph Builder::run() {
     if (!cancelled()) add_relabelled_states();
     if (cancelled()) break;
     if (graph_.states.size() == states && discoveries_.size() == found) {
-      // Nothing new: then the mirror images no state's region holds (after the growth, so
-      // that every state the motions reach is found first, from its own side), and the
-      // states above each state that no motion or probe met.
+      // Nothing new: then the off-centre pushes' seeds of CFs the graph lacks (once), the
+      // mirror images no state's region holds (after the growth, so that every state the
+      // motions reach is found first, from its own side), and the states above each state
+      // that no motion or probe met.
+      bool seeded = false;
+      for (const SeedCandidate& sc : off_centre) {
+        if (cancelled()) break;
+        if (std::any_of(graph_.states.begin(), graph_.states.end(),
+                        [&](const State& s) { return s.cf == sc.cf; }))
+          continue;
+        grow(add_state(sc.cf, sc.pose, sc.contacts, true, 0));
+        seeded = true;
+      }
+      off_centre.clear();
+      if (seeded) continue;
       if (options_.mirror_images && add_mirrored_states()) continue;
       if (options_.project_upward && project_upward()) continue;
       break;
@@ -1263,8 +1298,11 @@ State candidate_start(const SceneGeometry& scene, const State& from, const Candi
 bool reaches_target(const SceneGeometry& scene, const Candidate& candidate,
                     const MotionOutcome& outcome) {
   // (try_hypothesis writes a candidate's crossing as signature_text of the signature it wants)
-  return outcome.feasible &&
-         signature_text(scene, region_signature(outcome.contacts)) == candidate.crossing;
+  return outcome.feasible && crossing_text(scene, outcome.contacts) == candidate.crossing;
+}
+
+std::string crossing_text(const SceneGeometry& scene, const std::vector<PointContact>& contacts) {
+  return signature_text(scene, region_signature(contacts));
 }
 
 MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,

@@ -84,6 +84,9 @@ State candidate_start(const SceneGeometry& scene, const State& from, const Candi
 // with the other signs is a failure of this candidate).
 bool reaches_target(const SceneGeometry& scene, const Candidate& candidate,
                     const MotionOutcome& outcome);
+// The crossing signs of contacts' e-e-cross pairs as Candidate::crossing writes them
+// ("eA-e1 +"; empty without crossings).
+std::string crossing_text(const SceneGeometry& scene, const std::vector<PointContact>& contacts);
 
 // Re-runs the motion that a candidate reports (Candidate::run; by its name for a graph without
 // it) with an observer, for animations and frame-by-frame debugging. Deterministic.

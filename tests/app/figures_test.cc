@@ -155,6 +155,15 @@ int cheapest_collision(const json& graph) {
   return best;
 }
 
+// The transition folders drawn into a scene's output folder.
+std::vector<fs::path> transition_folders(const fs::path& scene_out) {
+  std::vector<fs::path> folders;
+  const fs::path transitions = scene_out / "transitions";
+  if (fs::is_directory(transitions))
+    for (const auto& f : fs::directory_iterator(transitions)) folders.push_back(f.path());
+  return folders;
+}
+
 TEST(FiguresCommandTest, FailedCandidateSequenceEndsAtTheCollision) {
   std::ifstream in(source("tests/data/graphs/example2.json"));
   const json graph = json::parse(in);
@@ -167,10 +176,7 @@ TEST(FiguresCommandTest, FailedCandidateSequenceEndsAtTheCollision) {
                             " --size 320x240 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("drew 1 transitions"), std::string::npos) << r.out;
-  const fs::path transitions = out / "example2" / "transitions";
-  ASSERT_TRUE(fs::is_directory(transitions));
-  std::vector<fs::path> folders;
-  for (const auto& f : fs::directory_iterator(transitions)) folders.push_back(f.path());
+  const std::vector<fs::path> folders = transition_folders(out / "example2");
   ASSERT_EQ(folders.size(), 1u);
   std::ifstream fin(folders[0] / "frames.json");
   const json frames = json::parse(fin);
@@ -202,6 +208,29 @@ TEST(FiguresCommandTest, DiagramOnlyFromAStoredGraph) {
   EXPECT_TRUE(fs::exists(out / "fig6.png")) << "Example 1's diagram is the paper's Fig. 6";
   EXPECT_FALSE(fs::exists(d / "transitions"));
   EXPECT_FALSE(fs::exists(d / "apart.png"));
+}
+
+// A candidate toward a rim-crossing CF fails when its motion arrives with the other crossing
+// sign (reaches_target); its sequence says so, as the generation did. The stored graph is
+// Example 2's (session 18's main command) with one such candidate kept: from state 4 toward
+// {(eA-e1, 1)} with the crossing "eA-e1 +", its slidingB+rotation arrives with "eA-e1 -".
+// (Until session 19 the header and frames.json called that replay "feasible".)
+TEST(FiguresCommandTest, ArrivalWithTheOtherCrossingIsAFailure) {
+  const fs::path out = fresh_dir("other_crossing");
+  const ExeRun r = run_pcsg(
+      "figures -q --scene " + source("scenes/example2.yaml") + " --graph " +
+      source("tests/data/graphs/example2_other_crossing.json") +
+      " --only transitions --candidate 0 --max-frames 2 --size 160x120 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("replay differs"), std::string::npos) << r.out;
+  const std::vector<fs::path> folders = transition_folders(out / "example2");
+  ASSERT_EQ(folders.size(), 1u);
+  std::ifstream fin(folders[0] / "frames.json");
+  const json frames = json::parse(fin);
+  EXPECT_FALSE(frames["feasible"].get<bool>());
+  const std::string reason = frames["reason"].get<std::string>();
+  EXPECT_NE(reason.find("arrives with the crossing eA-e1 -, not eA-e1 +"), std::string::npos)
+      << reason;
 }
 
 std::string file_bytes(const fs::path& p) {

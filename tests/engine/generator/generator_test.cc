@@ -12,6 +12,7 @@
 #include "engine/contact/contact.h"
 #include "engine/contact/convex_support.h"
 #include "engine/generator/graph_io.h"
+#include "engine/generator/seeds.h"
 #include "engine/generator/state_identity.h"
 #include "engine/scene/scene_swap.h"
 #include "generator_test_support.h"
@@ -256,6 +257,42 @@ TEST(Generator, MotionStepOptionActsAsTheSceneTolerance) {
   EXPECT_NE(generate_graph(scene, opt).stats.motion_steps, b.stats.motion_steps);
   opt.motion_step = -1;
   EXPECT_THROW(generate_graph(scene, opt), std::invalid_argument);
+}
+
+// A listed seed written by hand touches only to its digits: a pose within the detection band
+// (1e-3 L) of a contact is snapped onto the CF of the minima there; a pose farther away, or
+// one that penetrates, is an error naming the seed's place in the file.
+TEST(Generator, ListedSeedsAreSnappedOntoTheirCF) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("example1_two_seeds.yaml"));
+  const SceneGeometry scene = build_scene_geometry(spec);
+  const double L = scene.tol.length_scale;
+  MotionCounters counters;
+  auto raised = [&](double dz) {
+    SeedSpec s = spec.seeds.at(0);
+    s.pose.position.z() += dz;
+    return s;
+  };
+  // The paper's seed, raised by 1e-4 L: apart (gap ~1e-4 L, far above the contact gap).
+  ASSERT_TRUE(detect_contacts(scene, raised(1e-4 * L).pose).contacts.empty());
+  const SeedCandidate snapped = seed_from_pose(scene, raised(1e-4 * L), counters);
+  EXPECT_EQ(snapped.cf.str(scene), "{(fA-f1, 2)}");
+  ASSERT_EQ(snapped.contacts.size(), 2u);
+  for (const PointContact& c : snapped.contacts) EXPECT_LE(std::abs(c.gap), scene.tol.contact_gap);
+  // It moved by about the gap it closed, not elsewhere.
+  EXPECT_LT((snapped.pose.position - spec.seeds[0].pose.position).norm(), 1e-3 * L);
+  auto message = [&](const SeedSpec& s) -> std::string {
+    try {
+      seed_from_pose(scene, s, counters);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string far = message(raised(1e-2 * L));
+  EXPECT_NE(far.find("touches nothing, and no element pair is within"), std::string::npos) << far;
+  EXPECT_NE(far.find("example1_two_seeds.yaml:16"), std::string::npos) << far;
+  const std::string deep = message(raised(-1e-3 * L));
+  EXPECT_NE(deep.find("penetrates: fA inside f1"), std::string::npos) << deep;
 }
 
 std::vector<SceneSpec> transformed_copies(const SceneSpec& spec) {
