@@ -227,7 +227,7 @@ std::vector<SeedCandidate> find_seed_candidates(const SceneGeometry& scene,
   // half-extent along each other axis, with A's longest axis along the third (across the
   // push and the offset), so that a long A comes down across B's edges away from the centre
   // (a needle across a dish's rim, which no push at the centre lands on). 0.6: inside the
-  // paper's dish rim (radius 0.79 of B's half-extent), where its chords (4.1 long) are
+  // paper's dish rim (radius 0.79 of B's half-extent), where its chords (4.2 long) are
   // shorter than Example 1's ellipsoid and the needle (5).
   constexpr double kOffAxis = 0.6;
   // The off-centre pushes look for a rest across an edge, a few located touches away; one
