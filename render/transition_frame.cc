@@ -112,6 +112,10 @@ std::string collision_banner(const SceneGeometry& scene, const TransitionInfo& t
   return what;
 }
 
+bool shows_failure(const TransitionInfo& t, const MotionFrame& f, bool last_frame) {
+  return f.phase == "collision" || (last_frame && !t.feasible);
+}
+
 FrameRequest transition_frame_request(const TransitionInfo& t, const MotionFrame& f,
                                       const std::vector<PointContact>& start,
                                       const TransitionFrameStyle& style) {
@@ -148,10 +152,10 @@ Image draw_transition_view(SceneRenderer& renderer, const SceneGeometry& scene,
   return view;
 }
 
-Image add_transition_header(const Image& view, const SceneGeometry& scene,
-                            const TransitionInfo& t, const MotionFrame& f,
-                            const std::vector<PointContact>& start,
-                            const std::vector<ContactRole>& roles, const TextPainter& text) {
+Image add_transition_header(const Image& view, const SceneGeometry& scene, const TransitionInfo& t,
+                            const MotionFrame& f, const std::vector<PointContact>& start,
+                            const std::vector<ContactRole>& roles, const TextPainter& text,
+                            bool last_frame) {
   const double s = scale_of(view.height);
   const std::vector<PointContact>& contacts = f.contacts.empty() ? start : f.contacts;
   std::vector<ContactRole> present(roles.begin(), roles.end());
@@ -160,7 +164,7 @@ Image add_transition_header(const Image& view, const SceneGeometry& scene,
 
   // the header band: transition, motion and step, the current CF and the legend
   const double title_px = kTitlePx * s, line_px = kLinePx * s, margin = kMargin * s;
-  const bool collision = f.phase == "collision";
+  const bool collision = shows_failure(t, f, last_frame);
   const double band = 2 * margin + text.line_height(title_px) + 2 * (text.line_height(line_px) + kLineGap * s);
   const double banner = collision ? text.line_height(line_px) + 2 * margin : 0;
   const int top = static_cast<int>(std::ceil(band + banner));
@@ -185,7 +189,7 @@ Image add_transition_header(const Image& view, const SceneGeometry& scene,
     lx += 1.8 * line_px;
     lx += text.draw(out, lx, y, contact_role_name(r), line_px, contact_role_colour(r)) + 0.8 * line_px;
   }
-  // the collision banner: the offending elements named, and why the motion stopped
+  // the failure banner: the offending elements named, and why the motion stopped
   if (collision) {
     canvas.fill_rect(0, band, out.width, band + banner, palette::kWarning);
     text.draw(out, margin, band + margin, text.fit(collision_banner(scene, t, f), line_px, width),
@@ -200,9 +204,10 @@ Image draw_transition_frame(SceneRenderer& renderer, const SceneGeometry& scene,
                             const TransitionInfo& t, const MotionFrame& f,
                             const std::vector<PointContact>& start,
                             const std::vector<ContactRole>& roles,
-                            const TransitionFrameStyle& style, const TextPainter& text) {
+                            const TransitionFrameStyle& style, const TextPainter& text,
+                            bool last_frame) {
   return add_transition_header(draw_transition_view(renderer, scene, t, f, start, roles, style),
-                               scene, t, f, start, roles, text);
+                               scene, t, f, start, roles, text, last_frame);
 }
 
 Image transition_contact_sheet(const TransitionInfo& t, const std::vector<Image>& views,
@@ -218,7 +223,7 @@ Image transition_contact_sheet(const TransitionInfo& t, const std::vector<Image>
     if (k < frames.size()) {
       const MotionFrame& f = frames[k];
       const std::vector<PointContact>& contacts = f.contacts.empty() ? start : f.contacts;
-      c.warning = f.phase == "collision";
+      c.warning = shows_failure(t, f, k + 1 == frames.size());
       const std::string names = collision_text(scene, f);
       c.caption = {"step " + std::to_string(f.step) + "  \xC2\xB7  " + f.phase,
                    !names.empty() ? names : ContactFormation::of(contacts).str(scene)};

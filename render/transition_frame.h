@@ -52,18 +52,21 @@ Image draw_transition_view(SceneRenderer& renderer, const SceneGeometry& scene,
                            const TransitionFrameStyle& style);
 
 // The view under a header band (the transition, the motion type and step, the current CF, a
-// legend of the roles shown) and, at a collision, a banner naming the colliding elements.
-Image add_transition_header(const Image& view, const SceneGeometry& scene,
-                            const TransitionInfo& t, const MotionFrame& frame,
-                            const std::vector<PointContact>& start,
-                            const std::vector<ContactRole>& roles, const TextPainter& text);
+// legend of the roles shown) and, where a failed motion stops (a collision frame, or the
+// sequence's `last_frame` when the transition failed), a banner naming the colliding elements
+// and the reason.
+Image add_transition_header(const Image& view, const SceneGeometry& scene, const TransitionInfo& t,
+                            const MotionFrame& frame, const std::vector<PointContact>& start,
+                            const std::vector<ContactRole>& roles, const TextPainter& text,
+                            bool last_frame);
 
 // Both: one frame of the PNG sequence.
 Image draw_transition_frame(SceneRenderer& renderer, const SceneGeometry& scene,
                             const TransitionInfo& t, const MotionFrame& frame,
                             const std::vector<PointContact>& start,
                             const std::vector<ContactRole>& roles,
-                            const TransitionFrameStyle& style, const TextPainter& text);
+                            const TransitionFrameStyle& style, const TextPainter& text,
+                            bool last_frame);
 
 // One sheet of the frames' views (scaled to `cell_width`), each captioned with its step, phase
 // and CF; the collision frame framed in the warning colour; a legend of the roles.
@@ -75,7 +78,12 @@ Image transition_contact_sheet(const TransitionInfo& t, const std::vector<Image>
 
 // "fA with f1": the elements of a collision frame, named.
 std::string collision_text(const SceneGeometry& scene, const MotionFrame& frame);
-// "collision at step 12: fA2 with f1 — <why the motion stopped>", the banner's text.
+// True where the banner goes: a collision frame, or the last frame of a failed transition
+// (a motion that stops without a collision: no progress, a kept contact lost, the other
+// crossing at the end).
+bool shows_failure(const TransitionInfo& t, const MotionFrame& frame, bool last_frame);
+// "collision at step 12: fA2 with f1 — <why the motion stopped>", the banner's text ("stopped
+// at step 12 — <why>" when no elements collided).
 std::string collision_banner(const SceneGeometry& scene, const TransitionInfo& t,
                              const MotionFrame& frame);
 

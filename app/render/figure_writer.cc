@@ -160,9 +160,10 @@ void FigureWriter::renumber_transitions(const StateGraph& g) {
       if (top < 0)
         throw Error("transition frame '" + std::string(name) + "' is shorter than its view");
       const render::Image view = render::cropped(old, 0, top, old.width, d.view_height);
-      render::write_png_fast(render::add_transition_header(view, scene_, r.info, r.frames[k],
-                                                           r.start, r.roles[k], text_),
-                             (fs::path(m.folder) / name).string());
+      render::write_png_fast(
+          render::add_transition_header(view, scene_, r.info, r.frames[k], r.start, r.roles[k],
+                                        text_, k + 1 == d.ordinals.size()),
+          (fs::path(m.folder) / name).string());
       const int h = view.height * options_.sheet_cell_width / view.width;
       cells.push_back(render::resized(view, options_.sheet_cell_width, std::max(1, h)));
     }
@@ -229,8 +230,9 @@ void FigureWriter::on(TransitionFrameReady& e) {
   const render::Image view =
       render::draw_transition_view(*current_renderer_, *current_scene_, current_.info, e.frame,
                                    current_.start, e.roles, options_.frame);
-  const render::Image frame = render::add_transition_header(view, scene_, current_.info, e.frame,
-                                                            current_.start, e.roles, text_);
+  const render::Image frame =
+      render::add_transition_header(view, scene_, current_.info, e.frame, current_.start, e.roles,
+                                    text_, e.ordinal + 1 == current_.frames);
   char name[32];
   std::snprintf(name, sizeof name, "frame-%04d.png", e.ordinal);
   render::write_png_fast(frame, (fs::path(current_folder_) / name).string());

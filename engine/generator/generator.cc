@@ -421,6 +421,11 @@ class Builder {
   // edge of its region can miss a state above it that lies elsewhere along the region). Each
   // new state seeds its own LN graph. Returns whether any state was added.
   bool project_upward();
+  // True when some state of the graph has this CF (in any region).
+  bool holds_cf(const ContactFormation& cf) const {
+    return std::any_of(graph_.states.begin(), graph_.states.end(),
+                       [&](const State& s) { return s.cf == cf; });
+  }
   std::set<int> projected_upward_;
 
   const SceneGeometry& scene_;
@@ -626,9 +631,7 @@ bool Builder::project_upward() {
         if (ptc_codimension(type) != 1 || lone_contact(scene_, a, b)) continue;
         ContactFormation t = cf;
         t.add(a, b, type, 1);
-        if (std::none_of(graph_.states.begin(), graph_.states.end(),
-                         [&](const State& s) { return s.cf == t; }))
-          targets.push_back({id, t});
+        if (!holds_cf(t)) targets.push_back({id, t});
       }
   }
   if (targets.empty()) return false;
@@ -1187,10 +1190,7 @@ StateGraph Builder::run() {
     // An automatic candidate whose CF the graph already has adds a seed only for a separate
     // region, and a failed connectivity motion does not prove one; it is left out (a CF that
     // is new to the graph always seeds). Listed seeds are checked for connectivity.
-    if (scene_.spec.auto_seeds &&
-        std::any_of(graph_.states.begin(), graph_.states.end(),
-                    [&](const State& s) { return s.cf == sc.cf; }))
-      continue;
+    if (scene_.spec.auto_seeds && holds_cf(sc.cf)) continue;
     const int existing = find_state(sc.cf, sc.pose, sc.contacts);
     if (existing >= 0) {
       if (!scene_.spec.auto_seeds) graph_.states[existing].seed = true;
@@ -1230,9 +1230,7 @@ StateGraph Builder::run() {
       bool seeded = false;
       for (const SeedCandidate& sc : off_centre) {
         if (cancelled()) break;
-        if (std::any_of(graph_.states.begin(), graph_.states.end(),
-                        [&](const State& s) { return s.cf == sc.cf; }))
-          continue;
+        if (holds_cf(sc.cf)) continue;
         grow(add_state(sc.cf, sc.pose, sc.contacts, true, 0));
         seeded = true;
       }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include <thread>
 
 #include "app/render/graph_event_stream.h"
+#include "render/image.h"
 #include "run_pcsg.h"
 
 namespace pcsg::app {
@@ -231,6 +233,30 @@ TEST(FiguresCommandTest, ArrivalWithTheOtherCrossingIsAFailure) {
   const std::string reason = frames["reason"].get<std::string>();
   EXPECT_NE(reason.find("arrives with the crossing eA-e1 -, not eA-e1 +"), std::string::npos)
       << reason;
+  // Its last frame carries the failure banner, as a collision frame does (until session 20
+  // only collision frames had it, and this one said "done" under a "reached" ring): a band in
+  // the warning colour across the frame between the header and the view, which the first
+  // frame lacks.
+  std::vector<fs::path> pngs;
+  for (const auto& f : fs::directory_iterator(folders[0]))
+    if (f.path().filename().string().rfind("frame-", 0) == 0) pngs.push_back(f.path());
+  std::sort(pngs.begin(), pngs.end());
+  ASSERT_GE(pngs.size(), 2u);
+  auto banner_rows = [](const render::Image& im) {
+    auto warning = [](const std::uint8_t* p) {  // palette::kWarning = (0.86, 0.12, 0.10)
+      return p[0] > 170 && p[0] - p[1] > 80 && p[0] - p[2] > 80;
+    };
+    int rows = 0;
+    for (int y = 0; y < im.height; ++y)
+      rows += warning(im.pixel(1, y)) && warning(im.pixel(im.width / 2, y)) &&
+              warning(im.pixel(im.width - 2, y));
+    return rows;
+  };
+  const render::Image first = render::read_png(pngs.front().string());
+  const render::Image last = render::read_png(pngs.back().string());
+  EXPECT_EQ(banner_rows(first), 0) << pngs.front();
+  EXPECT_GT(banner_rows(last), 5) << pngs.back();
+  EXPECT_GT(last.height, first.height) << "the banner adds a band above the view";
 }
 
 std::string file_bytes(const fs::path& p) {

@@ -72,8 +72,8 @@ TEST(FailedTransitionTest, EndsAtTheCollisionWithTheElementsHighlighted) {
 
   SceneRenderer renderer(scene);
   TextPainter text;
-  const Image image = draw_transition_frame(renderer, scene, info, last, from.contacts,
-                                            {}, style, text);
+  const Image image = draw_transition_frame(renderer, scene, info, last, from.contacts, {}, style,
+                                            text, /*last_frame=*/true);
   // the banner: a full-width warning band between the header and the view
   int banner_rows = 0;
   for (int y = 0; y < image.height - style.height; ++y)
