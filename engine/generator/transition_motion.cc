@@ -311,10 +311,16 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
   }
   const double radius = kMatchSteps * h_;
   std::vector<bool> matched(tracks.size(), false);
-  for (const PointContact& d : rep.contacts) {
+  // First every detected contact that continues a tracked one (the same pair, the nearest
+  // tracked point), then the others: a new contact met within `radius` of a kept contact of
+  // another pair is new, not that contact changed, whichever order the detector lists them in
+  // (until session 20 it was read by that order).
+  std::vector<bool> continues(rep.contacts.size(), false), reached(tracks.size(), false);
+  std::vector<int> continued_by(tracks.size(), -1);  // the detection continuing each track
+  for (size_t k = 0; k < rep.contacts.size(); ++k) {
+    const PointContact& d = rep.contacts[k];
     int best = -1;
     double best_dist = radius;
-    // The same pair, nearest tracked point.
     for (size_t i = 0; i < tracks.size(); ++i) {
       const Track& t = tracks[i];
       if (matched[i] || !(t.c.a == d.a && t.c.b == d.b)) continue;
@@ -322,20 +328,31 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
       if (dist < best_dist) best = static_cast<int>(i), best_dist = dist;
     }
     if (best >= 0) {
-      matched[best] = true;
-      continue;
+      matched[best] = continues[k] = true;
+      continued_by[best] = static_cast<int>(k);
     }
-    // A changing contact that has reached its new elements: the event.
+  }
+  for (size_t k = 0; k < rep.contacts.size(); ++k) {
+    if (continues[k]) continue;
+    const PointContact& d = rep.contacts[k];
+    int best = -1;
+    double best_dist = radius;
+    // A changing contact that has reached its new elements: the event. Its old pair is gone,
+    // or seen at the same point (the boundary between the elements); seen elsewhere, it is
+    // still there and the new pair's contact is a new one (a state above: Example 1's
+    // {(fA-e1, 2), (fA-f1, 1)}, the wall contact 0.24 from a rim contact).
     for (size_t i = 0; i < tracks.size(); ++i) {
       const Track& t = tracks[i];
-      if (matched[i] || t.plan.action != ContactAction::Change || t.phase != Phase::Drive)
+      if (reached[i] || t.plan.action != ContactAction::Change || t.phase != Phase::Drive) continue;
+      if (continued_by[i] >= 0 &&
+          (rep.contacts[continued_by[i]].point_B - d.point_B).norm() > scene_.tol.distinct_points)
         continue;
       if (!(t.plan.new_a == d.a && t.plan.new_b == d.b)) continue;
       const double dist = (t.c.point_B - d.point_B).norm();
       if (dist < best_dist) best = static_cast<int>(i), best_dist = dist;
     }
     if (best >= 0) {
-      matched[best] = true;
+      matched[best] = reached[best] = true;
       obs.kind = Observation::Event;
       obs.track = best;
       obs.detected = d;

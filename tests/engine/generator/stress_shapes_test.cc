@@ -192,8 +192,7 @@ TEST(StressBifurcation, BothContactsNextToTheMergeAreDetectedAndGrow) {
 // {(fA-e1, 2)} is found by the seed search's off-centre pushes (seeds.cc; session 19): until
 // then the graph had 7 states, no push landed the needle across the rim and no motion from
 // the other states reached it (their witnesses lean on the rim at its normal cone's boundary).
-TEST(StressShapes, NeedleInTheDish) {
-  const Generated g = generate(load_scene_file(stress_path("needle_in_dish.yaml")));
+void expect_needle_graph(const Generated& g) {
   std::vector<std::string> states = kSingles;
   states.insert(states.end(), {"{(fA-f1, 2)}", "{(fA-e1, 2)}", "{(fA-e1, 1), (fA-f1, 1)}"});
   std::vector<std::string> got;
@@ -203,6 +202,25 @@ TEST(StressShapes, NeedleInTheDish) {
   for (const std::string& pair : chain_of_singles())
     EXPECT_NE(std::find(adj.begin(), adj.end(), pair), adj.end()) << pair;
   testing::expect_witnesses_valid(g);
+}
+
+TEST(StressShapes, NeedleInTheDish) {
+  expect_needle_graph(generate(load_scene_file(stress_path("needle_in_dish.yaml"))));
+}
+
+// The same needle with B moved far and rotated (as in example1_far_rotated.yaml): a rigid
+// motion of B's frame must leave the graph unchanged (issue 5).
+TEST(StressShapes, NeedleFarFromTheOriginAndRotated) {
+  GTEST_SKIP() << "open defect (engine/generator, frame dependence of the exploration), "
+                  "measured in session 20 (and with session 18's a52a5c0 build, 7 states): 8 "
+                  "states, {(fA-e1, 1)} twice (two witnesses no join connects) and no "
+                  "{(fA-e1, 1), (fA-f1, 1)}, which the needle's own scene reaches from a motion "
+                  "meeting the dish wall; 20 links against 24. Tried in session 20 and not "
+                  "kept: tipping about the line through two contacts, gap-closing probes "
+                  "(steepest descent of an element pair's distance: from {(fA-e1, 1)} the "
+                  "fA-f1 stationary points found are 5.2 to 5.5 apart, none at the needle's "
+                  "tip).";
+  expect_needle_graph(generate(load_scene_file(stress_path("needle_far_rotated.yaml"))));
 }
 
 }  // namespace
