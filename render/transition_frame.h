@@ -21,9 +21,9 @@ struct TransitionInfo {
   std::string from_cf, target_cf;  // the paper's notation
   std::string motion;              // the motion replayed (that worked, or the last one tried)
   bool feasible = false;
-  int to = -1;                     // the state reached, when feasible
-  std::string reason;              // why the replayed motion failed
-  int steps = 0;                   // steps of that motion
+  int to = -1;         // the state reached, when feasible
+  std::string reason;  // why the replayed motion failed
+  int steps = 0;       // steps of that motion
 };
 
 // "<from>-<target CF>", file-name safe: 0-fA-e1x1_fA-f1x1.
