@@ -11,6 +11,7 @@
 #include "engine/geometry/solid_extent.h"
 #include "engine/geometry/surface.h"
 #include "engine/geometry/surface_patch.h"
+#include "engine/poly/parser.h"
 
 namespace pcsg {
 namespace {
@@ -211,12 +212,30 @@ Solid build_solid(const ObjectSpec& object, std::vector<std::string>* warnings) 
   // had round-off ~4e-6 from terms of 1.7e10 (a distance error ~5e-7, 4e-8 L, against
   // solve_residual 1e-12 L), and edge tracing failed; about the new origin g's terms are ~16.
   // The origin is the box's centre rounded to a multiple of its diagonal, so a solid around
-  // its frame's origin keeps origin zero and its coefficients exactly.
+  // its frame's origin keeps origin zero and its coefficients exactly. A face with its text
+  // is parsed again about the origin (parse_inequality_about): recentring the coefficients
+  // expanded about zero cannot restore what their rounding lost, ~1e-6 in g's constant for
+  // the needle moved 1.3e5 away (scenes/stress/needle_far_rotated.yaml), which moves its
+  // surface by ~1e-7 (1e-8 L, against solve_residual 1e-12 L).
   {
     const double D = box.diagonal().norm();
     const Eigen::Vector3d o = (box.center() / D).array().round().matrix() * D;
+    // Only a text that is g's source (parsed about zero it gives g exactly; a scene rewritten
+    // by moved_scene states its coefficients to 10 digits) is parsed again.
     if (!o.isZero())
-      for (Polynomial& g : solid.surfaces) g = g.recentred(o);
+      for (size_t i = 0; i < solid.surfaces.size(); ++i) {
+        const FaceSpec& f = object.faces[i];
+        Polynomial& g = solid.surfaces[i];
+        const auto locate = locate_from(f.where);
+        bool source = false;
+        try {
+          source = !f.text.empty() && g.origin().isZero() &&
+                   parse_inequality(f.text, locate).g.coeffs() == g.coeffs();
+        } catch (const SceneError&) {
+          // a spec built in code whose text is only a label: keep its g
+        }
+        g = source ? parse_inequality_about(f.text, o, locate).g : g.recentred(o);
+      }
   }
   // the object's own tolerances: its B-rep does not depend on the other object
   Builder b{object, solid, Tolerances::for_length_scale(box.diagonal().norm()), 0.0, {}};

@@ -31,7 +31,9 @@ std::size_t utf8_length(unsigned char c) {
 
 class Parser {
  public:
-  Parser(const std::string& text, const OffsetLocator& locate) : text_(text), locate_(locate) {
+  Parser(const std::string& text, const OffsetLocator& locate,
+         const Eigen::Vector3d& origin = Eigen::Vector3d::Zero())
+      : text_(text), locate_(locate), origin_(origin) {
     lex();
   }
 
@@ -241,10 +243,10 @@ class Parser {
     switch (t.kind) {
       case Tok::Number:
         ++pos_;
-        return Polynomial::constant(t.number);
+        return about_origin(Polynomial::constant(t.number));
       case Tok::Var:
         ++pos_;
-        return Polynomial::variable(t.axis);
+        return about_origin(Polynomial::variable(t.axis));
       case Tok::LParen: {
         ++pos_;
         ++depth_;
@@ -292,8 +294,15 @@ class Parser {
     return p;
   }
 
+  // A literal or variable expanded about origin_: exact (a constant stays itself; x becomes
+  // o_x + (x - o_x)), so all rounding happens in the arithmetic about the origin.
+  Polynomial about_origin(const Polynomial& p) const {
+    return origin_.isZero() ? p : p.recentred(origin_);
+  }
+
   const std::string& text_;
   const OffsetLocator& locate_;
+  const Eigen::Vector3d origin_;
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
   int depth_ = 0;  // open parentheses, to tell "unbalanced" from "missing operand"
@@ -315,6 +324,11 @@ Polynomial parse_polynomial(const std::string& text, const OffsetLocator& locate
 
 Inequality parse_inequality(const std::string& text, const OffsetLocator& locate) {
   return Parser(text, locate).inequality();
+}
+
+Inequality parse_inequality_about(const std::string& text, const Eigen::Vector3d& origin,
+                                  const OffsetLocator& locate) {
+  return Parser(text, locate, origin).inequality();
 }
 
 }  // namespace pcsg

@@ -40,5 +40,12 @@ Polynomial parse_polynomial(const std::string& text,
 // are rejected with a message saying what to write instead. Throws SceneError.
 Inequality parse_inequality(const std::string& text,
                             const OffsetLocator& locate = locate_from({"", 1, 1}));
+// The same, with every coefficient expanded about `origin` (Polynomial::origin) as it is
+// parsed: each literal and variable is written about the origin before any arithmetic, so a
+// face written as "(x - 120000)^2 + ..." far from its frame's origin keeps the digits that
+// expanding about zero first and recentring after would round away (its coefficients there
+// are ~1e10 and their sums round at ~1e-6).
+Inequality parse_inequality_about(const std::string& text, const Eigen::Vector3d& origin,
+                                  const OffsetLocator& locate = locate_from({"", 1, 1}));
 
 }  // namespace pcsg

@@ -209,18 +209,28 @@ TEST(StressShapes, NeedleInTheDish) {
 }
 
 // The same needle with B moved far and rotated (as in example1_far_rotated.yaml): a rigid
-// motion of B's frame must leave the graph unchanged (issue 5).
+// motion of B's frame must leave the graph unchanged (issue 5). Skipped in session 20 (8
+// states, {(fA-e1, 1)} twice, no {(fA-e1, 1), (fA-f1, 1)}): B's faces, expanded about zero
+// with coefficients ~1e10 before being recentred, were ~1e-7 off the needle's dish; parsed
+// about B's origin (parse_inequality_about, brep_builder.cc) they are the dish to the last
+// bit, and the graph has the needle's states. One distinct link of the needle's 12,
+// {(fA-e1, 1), (fA-f1, 1)} -- {(fA-f2, 1)}, is still missing here (session 21).
 TEST(StressShapes, NeedleFarFromTheOriginAndRotated) {
-  GTEST_SKIP() << "open defect (engine/generator, frame dependence of the exploration), "
-                  "measured in session 20 (and with session 18's a52a5c0 build, 7 states): 8 "
-                  "states, {(fA-e1, 1)} twice (two witnesses no join connects) and no "
-                  "{(fA-e1, 1), (fA-f1, 1)}, which the needle's own scene reaches from a motion "
-                  "meeting the dish wall; 20 links against 24. Tried in session 20 and not "
-                  "kept: tipping about the line through two contacts, gap-closing probes "
-                  "(steepest descent of an element pair's distance: from {(fA-e1, 1)} the "
-                  "fA-f1 stationary points found are 5.2 to 5.5 apart, none at the needle's "
-                  "tip).";
   expect_needle_graph(generate(load_scene_file(stress_path("needle_far_rotated.yaml"))));
+}
+
+// The same rotation without the translation: no cancellation, only B's orientation differs.
+TEST(StressShapes, NeedleRotatedAboutTheOrigin) {
+  GTEST_SKIP() << "open defect (engine/generator, frame dependence of the seed search), "
+                  "measured in session 21: 6 states, 10 links; no {(fA-f1, 2)} (the seed "
+                  "search, aimed at B's axis-aligned box centre along principal axes of the "
+                  "vertices' moments about it, lands no push there, and no hypothesis goes up "
+                  "from {(fA-f1, 1)}) and no {(fA-e1, 1), (fA-f1, 1)}. The length scale (B's box "
+                  "diagonal, 13.174 against 13.016) is not the cause: forced to 13.016 the run "
+                  "has 5 states. Aimed at the boundary's area centroid with area-weighted "
+                  "moments: 8 states but {(fA-e2, 1)} twice and no {(fA-f1, 2)}, and the "
+                  "needle's own scene then 9 ({(fA-e1, 1), (fA-f1, 1)} twice).";
+  expect_needle_graph(generate(load_scene_file(stress_path("needle_rotated.yaml"))));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -144,6 +145,27 @@ TEST(Parser, ErrorsPointAtTheOffendingCharacter) {
         EXPECT_NE(msg.find(w), std::string::npos) << "'" << w << "' missing from: " << msg;
     }
   }
+}
+
+// The dish's bottom moved 1.2e5 along x and 2e4 along z (scenes/stress/needle_far_rotated.yaml
+// moves B so): about the moved origin it is the paper's polynomial again, to the last bit of
+// each literal. Expanded about zero first, its constant ~5.76e10 rounds at ~1e-5, which
+// recentring cannot undo.
+TEST(Parser, InequalityParsedAboutAFarOriginKeepsItsDigits) {
+  const std::string text = "4(x - 120000)^2 + 4y^2 - 10.07047(z - 20000) >= 15.75982";
+  const Eigen::Vector3d o(120000, 0, 20000);
+  const Polynomial about = parse_inequality_about(text, o).g;
+  EXPECT_EQ(about.origin(), o);
+  Polynomial paper = X().pow(2) * -4 - Y().pow(2) * 4 + Z() * 10.07047 + C(15.75982);
+  for (int n = 0; n < Polynomial::kNumCoeffs; ++n)
+    EXPECT_EQ(about.coeffs()[n], paper.coeffs()[n]) << "coefficient " << n << ": " << about.str();
+  // The same text expanded about zero and recentred: its constant is off by far more than
+  // the literal's own rounding (~2e-15).
+  const Polynomial recentred = parse_inequality(text).g.recentred(o);
+  EXPECT_GT(std::abs(recentred.coeff(0, 0, 0) - 15.75982), 1e-9) << recentred.str();
+  // Parsed about zero, the origin argument changes nothing.
+  const Polynomial zero = parse_inequality_about(text, Eigen::Vector3d::Zero()).g;
+  EXPECT_EQ(zero.coeffs(), parse_inequality(text).g.coeffs());
 }
 
 TEST(Parser, PolynomialRejectsAnInequality) {
