@@ -28,7 +28,7 @@ OffsetLocator locate_from(const SourceLocation& start);
 
 // "lhs <= rhs" or "lhs >= rhs", normalised so that the solid side is g <= 0.
 struct Inequality {
-  Polynomial g;  // lhs - rhs for "<=", rhs - lhs for ">="
+  Polynomial g;                     // lhs - rhs for "<=", rhs - lhs for ">="
   std::size_t operator_offset = 0;  // byte offset of "<=" / ">=" in the text
 };
 
