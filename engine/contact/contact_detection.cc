@@ -112,19 +112,24 @@ Eigen::Vector3d start_on(const Solid& solid, ElementId id, const Eigen::Vector3d
 }
 
 // resolve_contact from mesh-derived starts; when a face is involved and that finds no distance
-// minimum, again from the point of the face whose normal is opposite the other element's (the
-// middle of its normal cone) at its start. A strongly curved face holds its contact where its
-// normal turns opposite the other's: the needle's tips (scenes/stress/needle_in_dish.yaml,
-// radius of curvature 2e-5 L) touch the dish ~1e-5 L from their apex, and from a mesh start a
-// cell away the pair's Newton converged to a saddle pairing the tip with the dish 0.17 L away
-// (or diverged), so detection saw nothing at touching poses, only the penetration past its
-// tolerance. Costs nothing where the first solve finds a minimum.
+// minimum within `region_gap` (one the overlap region can hold), again from the point of the face
+// whose normal is opposite the other element's (the middle of its normal cone) at its start. A
+// strongly curved face holds its contact where its normal turns opposite the other's: the needle's
+// tips (scenes/stress/needle_in_dish.yaml, radius of curvature 2e-5 L) touch the dish ~1e-5 L from
+// their apex, and from a mesh start a cell away the pair's Newton converged to a saddle pairing the
+// tip with the dish 0.17 L away (or diverged), so detection saw nothing at touching poses, only the
+// penetration past its tolerance; or to a minimum with a gap of 2.3 pairing the tip with the dish
+// far away, while the tip poked into the dish (scenes/stress/needle_rotated.yaml). Costs nothing
+// where the first solve finds the region's minimum.
 ResolvedContact resolve_from_mesh_start(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
                                         ElementId b, const Eigen::Vector3d& start_A,
-                                        const Eigen::Vector3d& start_B) {
+                                        const Eigen::Vector3d& start_B, double region_gap) {
+  // a minimum the region can hold (detect_anew: region_gap)
+  auto holds = [&](const ResolvedContact& r) {
+    return r.found && r.minimum && r.contact.gap <= region_gap;
+  };
   ResolvedContact res = resolve_contact(scene, X_BA, a, b, start_A, start_B);
-  if ((res.found && res.minimum) || (a.kind != ElementKind::Face && b.kind != ElementKind::Face))
-    return res;
+  if (holds(res) || (a.kind != ElementKind::Face && b.kind != ElementKind::Face)) return res;
   // the middle of an element's normal cone at p: its surfaces' unit normals summed
   auto middle_normal = [](const Solid& S, ElementId el, const Eigen::Vector3d& p) {
     const SurfaceSet set = element_surfaces(S, el);
@@ -138,7 +143,7 @@ ResolvedContact resolve_from_mesh_start(const SceneGeometry& scene, const Pose& 
     if (const auto pA =
             u.allFinite() ? point_with_normal(gA, u, start_A, scene.tol) : std::nullopt) {
       ResolvedContact again = resolve_contact(scene, X_BA, a, b, *pA, start_B);
-      if (again.found && again.minimum) return again;
+      if (holds(again)) return again;
     }
   }
   if (b.kind == ElementKind::Face) {
@@ -147,7 +152,7 @@ ResolvedContact resolve_from_mesh_start(const SceneGeometry& scene, const Pose& 
     if (const auto pB =
             u.allFinite() ? point_with_normal(gB, u, start_B, scene.tol) : std::nullopt) {
       ResolvedContact again = resolve_contact(scene, X_BA, a, b, start_A, *pB);
-      if (again.found && again.minimum) return again;
+      if (holds(again)) return again;
     }
   }
   return res;
@@ -480,6 +485,13 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
   const SceneGeometry& scene = ctx.scene();
   const Tolerances& tol = scene.tol;
   ContactReport report;
+  // Where the inflated meshes overlap, the exact gap is below the two inflations plus the two
+  // chordal errors (contact_context.h); a minimum beyond twice that is not the region's own:
+  // the solve wandered to another pairing (the needle of scenes/stress/needle_rotated.yaml
+  // poked into the dish, its solve ending at a minimum 2.3 away, 0.17 L). Such a solve is
+  // retried (resolve_from_mesh_start) and, failing that, counts as unresolved.
+  const double region_gap =
+      2 * (2 * (scene.mesh_A.chordal_error + scene.mesh_B.chordal_error) + ctx.guaranteed_band());
   std::vector<std::pair<int, int>> pairs;
   if (!options.nearby ||
       !ctx.overlapping_triangles_near(X_BA, *options.nearby, pairs, kMaxTrianglePairs))
@@ -496,7 +508,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
     const auto [tA, tB] = pairs[start];
     const ResolvedContact res = resolve_from_mesh_start(
         scene, X_BA, c.a, c.b, start_on(scene.A, c.a, ctx.index_A().centroids[tA]),
-        start_on(scene.B, c.b, ctx.index_B().centroids[tB]));
+        start_on(scene.B, c.b, ctx.index_B().centroids[tB]), region_gap);
     if (!res.found) {
       if (!res.diverged) return Found::Nothing;
       ++report.failed_solves;
@@ -543,8 +555,9 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
     for (const Candidate& c : regions.candidates[r]) {
       PointContact first;
       const Found found = solve_from(r, c, c.pair, &first);
-      if ((found == Found::Failed || found == Found::Saddle) && c.a.kind == ElementKind::Face &&
-          c.b.kind == ElementKind::Face)
+      const bool wandered = found == Found::Minimum && first.gap > region_gap;
+      if ((found == Found::Failed || found == Found::Saddle || wandered) &&
+          c.a.kind == ElementKind::Face && c.b.kind == ElementKind::Face)
         unsettled[r].push_back(&c);
       if (found == Found::Penetration || found == Found::Nothing || !may_bifurcate(c)) continue;
       if (midpoints.empty()) {

@@ -167,6 +167,31 @@ TEST(ExampleScenes, NeedleTipsTouchingTheDishAreContacts) {
   EXPECT_TRUE(up.contacts.empty()) << ContactFormation::of(up.contacts).str(g);
 }
 
+// The needle with its tip 0.1 deep in the dish wall, the rest of it above the dish
+// (scenes/stress/needle_rotated.yaml, a pose of the seed search's approach): the fA-f1 solve
+// of the one overlap region (the needle crossing the wall) converged to a distance minimum
+// pairing the needle's middle with the dish 2.3 away (0.17 L), far beyond any gap an overlap of
+// the inflated meshes allows, and detection read the pose as apart; a step on it read as
+// penetrating, so the approach's bisection found no touching pose and the push was lost.
+TEST(ExampleScenes, NeedleTipPokedIntoTheRotatedDishIsAPenetration) {
+  const SceneGeometry g = build_scene_geometry(
+      load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/stress/needle_rotated.yaml"));
+  const Pose X = parse_pose(
+      "0.80422108299144957 -0.7940019425226762 0.27373437473566209 0.62574530113523608 "
+      "-0.12512944152489019 0.45744764016942641 0.61929564625812195");
+  // The evidence, independent of detection: the needle's apex (0, 0, -2.5) is inside B, deeper
+  // than a hundredth of a length unit below the dish wall (first order: 0.11).
+  const Eigen::Vector3d apex = X.apply(Eigen::Vector3d(0, 0, -2.5));
+  ASSERT_TRUE(strictly_inside(g.B, apex, 1e-2));
+  const ContactReport rep = detect_contacts(g, X);
+  ASSERT_TRUE(rep.penetrating()) << ContactFormation::of(rep.contacts).str(g);
+  const Penetration& p = rep.penetrations.front();
+  EXPECT_EQ(g.A.element_name(p.a) + "-" + g.B.element_name(p.b), "fA-f1");
+  // where the tip is: within a needle's thickness of the apex, and as deep
+  EXPECT_LT((p.point_B - apex).norm(), 0.05);
+  EXPECT_GT(p.depth, 0.05);
+}
+
 // The torus pushed up around B's convex bottom, tilted 0.031 rad off coaxial: a nearly
 // conformal ring contact, penetrating by 1.1e-3 at its deepest point, where no mesh vertex of
 // either solid lies inside the other (the sliver is thinner than the triangles) and where the

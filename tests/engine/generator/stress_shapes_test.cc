@@ -220,16 +220,13 @@ TEST(StressShapes, NeedleFarFromTheOriginAndRotated) {
 }
 
 // The same rotation without the translation: no cancellation, only B's orientation differs.
+// Skipped in session 21 (6 states, no {(fA-f1, 2)}, no {(fA-e1, 1), (fA-f1, 1)}): the seed
+// search's pushes down the dish landed a tip in the wall, where detection read the needle as
+// apart (its solve wandered to a minimum 2.3 away; ExampleScenes.NeedleTipPokedIntoThe-
+// RotatedDishIsAPenetration), so their approach bisections found no touching pose. Since
+// detection retries such a solve and otherwise looks for the penetration, the graph has the
+// needle's states (session 22).
 TEST(StressShapes, NeedleRotatedAboutTheOrigin) {
-  GTEST_SKIP() << "open defect (engine/generator, frame dependence of the seed search), "
-                  "measured in session 21: 6 states, 10 links; no {(fA-f1, 2)} (the seed "
-                  "search, aimed at B's axis-aligned box centre along principal axes of the "
-                  "vertices' moments about it, lands no push there, and no hypothesis goes up "
-                  "from {(fA-f1, 1)}) and no {(fA-e1, 1), (fA-f1, 1)}. The length scale (B's box "
-                  "diagonal, 13.174 against 13.016) is not the cause: forced to 13.016 the run "
-                  "has 5 states. Aimed at the boundary's area centroid with area-weighted "
-                  "moments: 8 states but {(fA-e2, 1)} twice and no {(fA-f1, 2)}, and the "
-                  "needle's own scene then 9 ({(fA-e1, 1), (fA-f1, 1)} twice).";
   expect_needle_graph(generate(load_scene_file(stress_path("needle_rotated.yaml"))));
 }
 
