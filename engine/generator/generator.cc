@@ -351,11 +351,24 @@ class Builder {
 
  private:
   bool cancelled() const { return cancel_ && cancel_->load(); }
+  // Joins run ahead of find_state: per (state, member), whether that witness of the state is
+  // joined to the pose (joined_within_cf), with the join's counters.
+  using JoinsAhead = std::map<std::pair<int, int>, std::pair<bool, MotionCounters>>;
+  // The joins find_state(cf, pose, contacts) would try as the graph stands, run on the worker
+  // threads while the graph does not change (beside the motions whose ends they place).
+  // find_state later takes each from here where it would run it itself, and runs the joins
+  // with states and witnesses added in between; each join is a pure function of its two
+  // poses, so the graph and the counters do not depend on the thread count.
+  JoinsAhead joins_ahead(const ContactFormation& cf, const Pose& pose,
+                         const std::vector<PointContact>& contacts) const;
   // The state of this CF whose region holds `pose` (whose exact contacts are `contacts`), or
   // -1. A witness joined to several states proves them one state (connectivity is
-  // transitive): they are united, and merged when the run ends.
+  // transitive): they are united, and merged when the run ends. `ahead` (optional): joins
+  // already run (joins_ahead).
   int find_state(const ContactFormation& cf, const Pose& pose,
-                 const std::vector<PointContact>& contacts);
+                 const std::vector<PointContact>& contacts, const JoinsAhead* ahead = nullptr);
+  // joins_ahead of each discovery (none for a null one), on the worker threads.
+  std::vector<JoinsAhead> joins_ahead_of(const std::vector<const Discovery*>& found);
   int representative(int id);
   // Whether two poses are one (positions within tol.distinct_points, orientations within
   // kSamePoseAngle): the same witness reached twice.
@@ -427,6 +440,13 @@ class Builder {
                        [&](const State& s) { return s.cf == cf; });
   }
   std::set<int> projected_upward_;
+  // The first i in [0, n) for which test(i, counters) holds, or -1 (test: a join, a pure
+  // function of its inputs): the answer, and the counters merged into counters_, of testing
+  // them one by one in order, with up to options_.threads tests running at once. The tests
+  // of a batch after the first that holds are dropped with their counters, so neither
+  // depends on the thread count.
+  template <typename Test>
+  int first_holding(size_t n, Test&& test);
 
   const SceneGeometry& scene_;
   GeneratorOptions options_;
@@ -503,8 +523,59 @@ int Builder::representative(int id) {
   return id;
 }
 
+template <typename Test>
+int Builder::first_holding(size_t n, Test&& test) {
+  const size_t batch = static_cast<size_t>(std::max(1, options_.threads));
+  for (size_t begin = 0; begin < n; begin += batch) {
+    const size_t count = std::min(batch, n - begin);
+    std::vector<char> holds(count, 0);
+    std::vector<MotionCounters> counters(count);
+    for (MotionCounters& c : counters) c.measure = counters_.measure;
+    parallel_for(
+        count, options_.threads, [&] { return cancelled(); },
+        [&](size_t k) { holds[k] = test(begin + k, counters[k]); });
+    for (size_t k = 0; k < count; ++k) {
+      counters_.merge(counters[k]);
+      if (holds[k]) return static_cast<int>(begin + k);
+    }
+  }
+  return -1;
+}
+
+Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose& pose,
+                                         const std::vector<PointContact>& contacts) const {
+  JoinsAhead joins;
+  const RegionSignature sig = region_signature(contacts);
+  for (const State& s : graph_.states)
+    if (s.cf == cf && signatures_[s.id] == sig)
+      for (const Witness& m : members_[s.id])
+        if (same_pose(m.pose, pose)) return joins;  // find_state tries no join
+  for (const State& s : graph_.states) {
+    if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
+    for (size_t m = 0; m < members_[s.id].size(); ++m) {
+      MotionCounters c;
+      c.measure = counters_.measure;
+      const bool joined = joined_within_cf(scene_, members_[s.id][m].pose, pose, cf, c, symmetry_);
+      joins[{s.id, static_cast<int>(m)}] = {joined, c};
+      if (joined) break;
+    }
+  }
+  return joins;
+}
+
+std::vector<Builder::JoinsAhead> Builder::joins_ahead_of(
+    const std::vector<const Discovery*>& found) {
+  std::vector<JoinsAhead> joins(found.size());
+  parallel_for(
+      found.size(), options_.threads, [&] { return cancelled(); },
+      [&](size_t k) {
+        if (found[k]) joins[k] = joins_ahead(found[k]->cf, found[k]->pose, found[k]->contacts);
+      });
+  return joins;
+}
+
 int Builder::find_state(const ContactFormation& cf, const Pose& pose,
-                        const std::vector<PointContact>& contacts) {
+                        const std::vector<PointContact>& contacts, const JoinsAhead* ahead) {
   PhaseScope phase(*this, Phase::Identity);
   const RegionSignature sig = region_signature(contacts);
   // A pose a state holds already (a mirror image's image is the witness itself): every join
@@ -518,9 +589,21 @@ int Builder::find_state(const ContactFormation& cf, const Pose& pose,
     if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
     // Already known to be the state found: nothing to prove.
     if (found >= 0 && representative(s.id) == representative(found)) continue;
+    const std::vector<Witness>& members = members_[s.id];
+    // The joins run ahead first, in order; the members after them (added since) are tried
+    // here, a batch at a time.
+    size_t m = 0;
     bool joined = false;
-    for (const Witness& m : members_[s.id])
-      if ((joined = joined_within_cf(scene_, m.pose, pose, cf, counters_, symmetry_))) break;
+    for (; ahead && m < members.size() && !joined; ++m) {
+      const auto known = ahead->find({s.id, static_cast<int>(m)});
+      if (known == ahead->end()) break;
+      counters_.merge(known->second.second);
+      joined = known->second.first;
+    }
+    if (!joined)
+      joined = first_holding(members.size() - m, [&](size_t k, MotionCounters& c) {
+                 return joined_within_cf(scene_, members[m + k].pose, pose, cf, c, symmetry_);
+               }) >= 0;
     if (!joined) continue;
     if (found < 0) {
       found = s.id;
@@ -720,6 +803,7 @@ void Builder::grow(int seed_id) {
         }
       }
     std::vector<TryResult> results(jobs.size());
+    std::vector<std::vector<JoinsAhead>> ahead(jobs.size());
     std::vector<std::optional<Discovery>> probed(probes.size());
     std::vector<MotionCounters> probe_counters(probes.size());
     parallel_for(
@@ -728,6 +812,10 @@ void Builder::grow(int seed_id) {
           if (j < jobs.size()) {
             results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
                                         options_.measure_discretisation);
+            for (const Reached& t : results[j].targets)
+              ahead[j].push_back(t.candidate.feasible ? joins_ahead(t.candidate.cf, t.outcome.end,
+                                                                    t.outcome.contacts)
+                                                      : JoinsAhead{});
             return;
           }
           const size_t k = j - jobs.size();
@@ -749,10 +837,11 @@ void Builder::grow(int seed_id) {
         counters_.merge(r.counters);
       }
       const int from = jobs[j].first;
-      for (Reached& t : r.targets) {
+      for (size_t k = 0; k < r.targets.size(); ++k) {
+        Reached& t = r.targets[k];
         Candidate& c = t.candidate;
         if (c.feasible) {
-          int to = find_state(c.cf, t.outcome.end, t.outcome.contacts);
+          int to = find_state(c.cf, t.outcome.end, t.outcome.contacts, &ahead[j][k]);
           if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
             to = add_state(c.cf, t.outcome.end, t.outcome.contacts, false,
                            graph_.states[c.from].depth + 1);
@@ -794,16 +883,16 @@ void Builder::join_duplicate_states() {
       if (!(si.cf == sj.cf) || signatures_[i] != signatures_[j] ||
           representative(i) == representative(j))
         continue;
-      bool joined = false;
-      for (size_t u = 0; u < members_[i].size() && !joined; ++u)
-        for (size_t v = 0; v < members_[j].size() && !joined; ++v)
-          joined = joined_by_parameter_path(scene_, members_[i][u].pose, members_[j][v].pose,
-                                            si.cf, counters_, symmetry_);
+      const std::vector<Witness>&mi = members_[i], &mj = members_[j];
+      bool joined = first_holding(mi.size() * mj.size(), [&](size_t k, MotionCounters& c) {
+                      return joined_by_parameter_path(scene_, mi[k / mj.size()].pose,
+                                                      mj[k % mj.size()].pose, si.cf, c, symmetry_);
+                    }) >= 0;
       // Then through a roadmap of the region between the two states' own witnesses (joined
       // the duplicates of Example 1 swapped and of the needle that every path above missed).
       if (!joined)
         joined = joined_by_roadmap(scene_, members_[i][0].pose, members_[j][0].pose, si.cf,
-                                   signatures_[i], counters_);
+                                   signatures_[i], counters_, nullptr, options_.threads);
       if (!joined) continue;
       const int r1 = representative(i), r2 = representative(j);
       united_[std::max(r1, r2)] = std::min(r1, r2);
@@ -898,11 +987,20 @@ bool Builder::add_mirrored_states() {
   PhaseScope phase(*this, Phase::Mirror);
   bool added = false;
   const int n = static_cast<int>(graph_.states.size());
-  for (int id = static_cast<int>(mirrored_upto_); id < n && !cancelled(); ++id) {
-    mirrored_upto_ = id + 1;  // a state's witness never changes: its image is placed once
-    const std::optional<Discovery> image = mirror_image(id);
+  // The images first (a state's witness never changes: each is placed once), and their joins
+  // on the worker threads.
+  std::vector<std::optional<Discovery>> images;
+  for (int id = static_cast<int>(mirrored_upto_); id < n && !cancelled(); ++id)
+    images.push_back(mirror_image(id));
+  std::vector<const Discovery*> placed;
+  for (const std::optional<Discovery>& image : images) placed.push_back(image ? &*image : nullptr);
+  const std::vector<JoinsAhead> ahead = joins_ahead_of(placed);
+  const int first = static_cast<int>(mirrored_upto_);
+  for (int id = first; id < first + static_cast<int>(images.size()) && !cancelled(); ++id) {
+    mirrored_upto_ = id + 1;
+    const std::optional<Discovery>& image = images[id - first];
     if (!image || static_cast<int>(graph_.states.size()) >= options_.max_states) continue;
-    if (find_state(image->cf, image->pose, image->contacts) >= 0) continue;
+    if (find_state(image->cf, image->pose, image->contacts, &ahead[id - first]) >= 0) continue;
     // The mirror reverses every crossing sign (state_identity.h), so an image with a crossing
     // contact lies in another class (CF and region signature) than its source. When the graph
     // holds a state of that class already, the image is taken to be in one of its regions,
@@ -1205,10 +1303,17 @@ StateGraph Builder::run() {
   // Then the hypotheses toward CFs still missing, from the states' other witnesses; and the
   // discoveries those motions make, until neither finds anything new.
   for (size_t k = 0;;) {
+    // The joins of the discoveries pending now, on the worker threads (those the growth
+    // below adds wait for the next pass).
+    std::vector<const Discovery*> pending;
+    for (size_t i = k; i < discoveries_.size(); ++i) pending.push_back(&discoveries_[i].second);
+    const std::vector<JoinsAhead> ahead = joins_ahead_of(pending);
+    const size_t first = k;
     for (; k < discoveries_.size() && !cancelled(); ++k) {
       const auto [from, d] = discoveries_[k];
       if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
-      int id = find_state(d.cf, d.pose, d.contacts);
+      int id = find_state(d.cf, d.pose, d.contacts,
+                          k - first < ahead.size() ? &ahead[k - first] : nullptr);
       if (id < 0) {
         id = add_state(d.cf, d.pose, d.contacts, true, 0);
         grow(id);

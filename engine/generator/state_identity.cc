@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "engine/generator/parallel_for.h"
+
 namespace pcsg {
 
 RegionSignature region_signature(const std::vector<PointContact>& contacts) {
@@ -199,7 +201,7 @@ constexpr int kRoadmapNeighbours = 8;
 
 bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
                        const ContactFormation& cf, const RegionSignature& signature,
-                       MotionCounters& counters, RoadmapStats* stats) {
+                       MotionCounters& counters, RoadmapStats* stats, int threads) {
   const double size = scene.A.bbox.diagonal().norm() / 2;
   const Eigen::Vector3d cA = scene.A.bbox.center();
   std::vector<Pose> starts;
@@ -220,9 +222,12 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
         starts.push_back(m);
       }
   std::vector<Pose> nodes = {a, b};
-  for (const Pose& start : starts) {
+  std::vector<ProjectionResult> projected(starts.size());
+  parallel_for(
+      starts.size(), threads, [] { return false; },
+      [&](size_t k) { projected[k] = project_onto_cf(scene, starts[k], cf); });
+  for (const ProjectionResult& p : projected) {
     ++counters.detections;
-    const ProjectionResult p = project_onto_cf(scene, start, cf);
     if (p.ok && region_signature(p.contacts) == signature) nodes.push_back(p.pose);
   }
   const int n = static_cast<int>(nodes.size());
@@ -247,12 +252,32 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // The edges in order, each tried unless its ends are joined already; `threads` of those
+  // still open run at once, and a result is used (its counters merged) only where the order
+  // would have tried it, so neither the answer nor the counters depend on the thread count.
   int motions = 0;
-  for (const auto& [d, i, j] : edges) {
-    if (root(0) == root(1)) break;
-    if (root(i) == root(j)) continue;
-    ++motions;
-    if (moved_either_way(scene, nodes[i], nodes[j], cf, counters)) parent[root(i)] = root(j);
+  const size_t batch = static_cast<size_t>(std::max(1, threads));
+  for (size_t next = 0; next < edges.size() && root(0) != root(1);) {
+    std::vector<size_t> open;
+    for (; next < edges.size() && open.size() < batch; ++next)
+      if (root(std::get<1>(edges[next])) != root(std::get<2>(edges[next]))) open.push_back(next);
+    std::vector<char> moved(open.size(), 0);
+    std::vector<MotionCounters> tried(open.size());
+    for (MotionCounters& c : tried) c.measure = counters.measure;
+    parallel_for(
+        open.size(), threads, [] { return false; },
+        [&](size_t k) {
+          const auto& [d, i, j] = edges[open[k]];
+          moved[k] = moved_either_way(scene, nodes[i], nodes[j], cf, tried[k]);
+        });
+    for (size_t k = 0; k < open.size(); ++k) {
+      const auto& [d, i, j] = edges[open[k]];
+      if (root(0) == root(1)) break;
+      if (root(i) == root(j)) continue;
+      ++motions;
+      counters.merge(tried[k]);
+      if (moved[k]) parent[root(i)] = root(j);
+    }
   }
   if (stats) *stats = {n, motions};
   return root(0) == root(1);

@@ -94,13 +94,14 @@ bool joined_within_cf(const SceneGeometry& scene, const Pose& a, const Pose& b,
 // each also turned about A's own axes; and a and b themselves moved and turned along A's axes
 // (all moving with A, so the roadmap does not depend on B's frame or the scene's unit). Every
 // edge is a checked motion, so `true` is a proof; `false` proves nothing. `stats` (optional)
-// receives the nodes and the motions tried.
+// receives the nodes and the motions tried. `threads`: how many projections and motions run at
+// once (the answer and the counters are those of one thread).
 struct RoadmapStats {
   int nodes = 0;
   int motions = 0;
 };
 bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
                        const ContactFormation& cf, const RegionSignature& signature,
-                       MotionCounters& counters, RoadmapStats* stats = nullptr);
+                       MotionCounters& counters, RoadmapStats* stats = nullptr, int threads = 1);
 
 }  // namespace pcsg

@@ -30,6 +30,17 @@ void expect_roadmap_joins(const SceneGeometry& scene, const Pose& a, const Pose&
       << stats.nodes << " nodes, " << stats.motions << " motions";
   // Not by the two witnesses alone: through sampled nodes.
   EXPECT_GT(stats.nodes, 2);
+  // Run with two threads (a batch of edges at a time, the later ones of a batch dropped
+  // when an earlier one joins their ends): the same roadmap, motions and counters.
+  MotionCounters counters2;
+  RoadmapStats stats2;
+  EXPECT_TRUE(joined_by_roadmap(scene, a, b, cf, region_signature(ra.contacts), counters2, &stats2,
+                                /*threads=*/2));
+  EXPECT_EQ(stats2.nodes, stats.nodes);
+  EXPECT_EQ(stats2.motions, stats.motions);
+  EXPECT_EQ(counters2.detections, counters.detections);
+  EXPECT_EQ(counters2.pair_solves, counters.pair_solves);
+  EXPECT_EQ(counters2.steps, counters.steps);
 }
 
 // Example 1 with A and B swapped held {(e1-fA, 1), (f1-fA, 1)} twice (session 13): the rim
