@@ -133,8 +133,7 @@ class Motion {
             const Observation* collision = nullptr) const;
   // After a step X_ -> F.apply(X_, s) whose observation `obs` was located by bisection at
   // the step fraction `lo` (the last pose like X_): when a settling contact leaves its new
-  // region across the far side, settles it in the middle of the region along the step; when
-  // that region is only the boundary it came from, has the step taken again (normal drive).
+  // region across the far side, settles it in the middle of the region along the step.
   bool settle_within_step(const Observation& obs, const TwistFrame& F, const Twist& s,
                           double lo);
   // Changing e-e-touch contacts bound for a face continue as the new pair as soon as that
@@ -173,16 +172,6 @@ class Motion {
   double h_ = 0, size_ = 1;
   int max_steps_ = 0, step_ = 0;
   bool used_rotation_drive_ = false;
-  // The normal rates and the directions toward their cone's middle of the f-e and e-f
-  // contacts settling onto their edge in the step being built (add_drive), and whether this
-  // step drives those normals directly instead of by the rotation about the edge (run()).
-  struct SettlingNormal {
-    Eigen::Matrix<double, 3, 6> dn;
-    Eigen::Vector3d dir;
-  };
-  std::vector<SettlingNormal> settling_normals_;
-  bool settle_by_normal_ = false;
-  bool normal_settle_next_ = false;  // the next step starts with settle_by_normal_
 };
 
 std::string Motion::name() const {
@@ -496,14 +485,8 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   if (approaching) {
     used_rotation_drive_ = true;
     const Eigen::Vector3d dir = cone_middle(S, current, x) - n;
-    // a face's normal on the edge (f-e, e-f), the normal the rotation about the edge turns
-    const bool face_on_edge =
-        current.kind == ElementKind::Edge && (t.c.type == PtcType::FE || t.c.type == PtcType::EF);
-    if (current.kind == ElementKind::Edge && !(face_on_edge && settle_by_normal_))
-      add_edge_rotation(t, F, dn, dir, sys);
-    else if (dir.norm() > 0)
-      sys.add_drive(dn, dir.normalized(), 1.0);
-    if (face_on_edge && dir.norm() > 0) settling_normals_.push_back({dn, dir});
+    if (current.kind == ElementKind::Edge) add_edge_rotation(t, F, dn, dir, sys);
+    else if (dir.norm() > 0) sys.add_drive(dn, dir.normalized(), 1.0);
     if (variant_.fix_unchanged_side) sys.add_drive(dx_other, Eigen::Vector3d::Zero(), 0.3);
   } else if (current.kind == ElementKind::Face) {
     // `current` is the new face now: slide away from the edge or vertex it was reached from.
@@ -527,25 +510,11 @@ bool Motion::settle_within_step(const Observation& obs, const TwistFrame& F, con
   // crossed by one settling rotation, which reported "contact eA-fB became fC-fB". Settling
   // only seeks a witness away from the region's boundaries; when the region along the step is
   // [X_, lo], its middle is the one farthest from both.
-  // The same when a step that drove a face's normal on the edge (settle_by_normal_) takes the
-  // contact off its elements without it becoming another pair (the needle's tip turned off
-  // the dish's rim: needle_rotated.yaml).
-  const bool left_by_normal = obs.kind == Observation::Missing && settle_by_normal_;
-  if ((obs.kind != Observation::KeptChanged && !left_by_normal) || lo <= 0) return false;
+  if (obs.kind != Observation::KeptChanged || lo <= 0) return false;
   const Track& t = tracks_[obs.track];
   if (t.plan.action != ContactAction::Change || t.phase != Phase::Settle ||
       !(t.c.a == t.plan.new_a && t.c.b == t.plan.new_b))
     return false;
-  // A region narrower than this fraction of a step along it is not a thin region but the
-  // boundary the contact was settling away from: the step turned a face's normal on the edge
-  // back across it (the needle's tip on the dish's rim: lo 5e-6 and 6e-10, against ~0.5 for
-  // weak_edge's 0.57-degree cone). The step is taken again driving those normals directly.
-  constexpr double kBoundaryFraction = 1e-3;
-  if (lo < kBoundaryFraction && !settle_by_normal_ &&
-      (t.c.type == PtcType::FE || t.c.type == PtcType::EF)) {
-    normal_settle_next_ = true;
-    return true;
-  }
   std::vector<Track> tm = tracks_;
   const std::optional<Pose> Ym = correct(F.apply(X_, s * (0.5 * lo)), tm);
   if (!Ym) return false;
@@ -623,27 +592,12 @@ MotionOutcome Motion::run() {
     if (all_done) break;
 
     const TwistFrame F = frame_at(X_);
-    std::optional<Twist> s;
-    for (settle_by_normal_ = normal_settle_next_;; settle_by_normal_ = true) {
-      DriveSystem sys;
-      settling_normals_.clear();
-      for (const Track& t : tracks_)
-        if (!add_drive(t, F, sys))
-          return fail("contact " + element_pair_name(scene_, t.c.a, t.c.b) +
-                      " has no rates at step " + std::to_string(step_));
-      s = sys.solve();
-      // The rotation about a settling edge contact's tangent, projected onto the motions that
-      // keep the other contacts, can turn its normal back out of the edge's cone: then the
-      // step settles nothing and the witness stays on the region's boundary (the needle's tip
-      // on the dish's rim with its other end held in the dish, needle_far_rotated.yaml). The
-      // step drives those normals toward the cone's middle instead.
-      if (settle_by_normal_ || !s) break;
-      bool turns_back = false;
-      for (const SettlingNormal& c : settling_normals_)
-        if ((c.dn * *s).dot(c.dir) <= 0) turns_back = true;
-      if (!turns_back) break;
-    }
-    normal_settle_next_ = false;
+    DriveSystem sys;
+    for (const Track& t : tracks_)
+      if (!add_drive(t, F, sys))
+        return fail("contact " + element_pair_name(scene_, t.c.a, t.c.b) +
+                    " has no rates at step " + std::to_string(step_));
+    auto s = sys.solve();
     if (!s)
       return fail("no motion keeps the kept contacts and drives the others (step " +
                   std::to_string(step_) + ")");
