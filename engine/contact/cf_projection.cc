@@ -114,7 +114,10 @@ ProjectionResult project_onto_cf(const ContactContext& context, const Pose& star
   if (!evaluate(scene, start, tracked, cur, &result.reason)) return result;
   for (int it = 0;; ++it) {
     result.iterations = it;
-    if (cur.r.size() == 0 || cur.r.cwiseAbs().maxCoeff() <= tol.solve_residual) break;
+    // the residuals are evaluated at the contacts' coordinates in B's frame
+    double coordinates = 0;
+    for (const Tracked& t : cur.tracked) coordinates = std::max(coordinates, t.c.point_B.norm());
+    if (cur.r.size() == 0 || cur.r.cwiseAbs().maxCoeff() <= tol.residual_at(coordinates)) break;
     if (it >= tol.projection_max_iterations) {
       result.reason = "no convergence in " + std::to_string(it) + " iterations (residual " +
                       std::to_string(cur.r.cwiseAbs().maxCoeff()) + ")";

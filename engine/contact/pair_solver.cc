@@ -1,16 +1,18 @@
 #include "engine/contact/pair_solver.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "engine/contact/pair_touch.h"
 
 namespace pcsg {
 namespace {
 
-NewtonOptions newton_options(const Tolerances& tol) {
+// For a pair solved at coordinates of size `coordinate_size` (B's frame).
+NewtonOptions newton_options(const Tolerances& tol, double coordinate_size) {
   NewtonOptions o;
   o.length_scale = tol.length_scale;
-  o.residual = tol.solve_residual;
+  o.residual = tol.residual_at(coordinate_size);
   o.max_iterations = tol.solve_max_iterations;
   return o;
 }
@@ -36,7 +38,9 @@ PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, El
                                 ElementId b, PtcType type, const Eigen::Vector3d& start_A,
                                 const Eigen::Vector3d& start_B) {
   const PairSetup setup = PairSetup::make(scene, X_BA, a, b);
-  const NewtonOptions options = newton_options(scene.tol);
+  // A's points enter B's frame at |t| + |p_A| at most.
+  const NewtonOptions options =
+      newton_options(scene.tol, std::max(setup.t.norm() + start_A.norm(), start_B.norm()));
   PairSolution out;
   PointContact& c = out.contact;
   c.a = a;

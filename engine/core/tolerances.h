@@ -7,7 +7,9 @@
 // Relative factors are chosen against machine epsilon (2.2e-16) and against the sizes of the
 // things they must separate: solver round-off (~1e-14 L) below, mesh and motion-step features
 // (~1e-3 L) above.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pcsg {
 
@@ -19,6 +21,19 @@ struct Tolerances {
   // Newton stops when a point's distance residual is below this: ~100x the round-off of
   // evaluating a quartic at coordinates of size L (|x|^4 * eps, normalised by the gradient).
   double solve_residual = 1e-12;
+  // The residual a solve can reach where its points have coordinates of size |x|: evaluating
+  // a contact's residuals (R p_A + t - p_B; a polynomial about its origin) rounds by a few
+  // units in the last place of |x|, ~eps |x|. Far from B's origin that exceeds solve_residual
+  // (the needle with B's frame 1.3e5 away, L = 13.2: the residual stalls at 1.3e-11 to
+  // 1.6e-11 against 1.3e-11, and whether a solve converged was decided by round-off), so the
+  // solves stop at this many units of eps |x| instead: 8 covers the 0.5 eps |x| measured
+  // there with room, and near the origin (|x| ~ L) it is 2e-3 of solve_residual, which it
+  // leaves in charge.
+  static constexpr double kRoundOffUnits = 8;
+  double residual_at(double coordinate_size) const {
+    return std::max(solve_residual,
+                    kRoundOffUnits * std::numeric_limits<double>::epsilon() * coordinate_size);
+  }
   // Newton iteration cap: quadratic convergence needs < 10 from a mesh-quality start; 50 leaves
   // room for damped steps from poor starts without hiding divergence.
   int solve_max_iterations = 50;

@@ -104,7 +104,7 @@ Projection project_onto_surface(const Polynomial& g, const Eigen::Vector3d& star
   for (; r.iterations <= tol.solve_max_iterations; ++r.iterations) {
     const double gn2 = grad.squaredNorm();
     r.residual = gn2 > 0 ? std::abs(v) / std::sqrt(gn2) : kInf;
-    if (r.residual <= tol.solve_residual) {
+    if (r.residual <= tol.residual_at(r.point.norm())) {
       r.converged = true;
       return r;
     }
@@ -152,7 +152,7 @@ Projection project_onto_curve(const Polynomial& g1, const Polynomial& g2,
   Eigen::Matrix<double, 2, 3> J;
   r.residual = evaluate(r.point, res, J);
   for (; r.iterations <= tol.solve_max_iterations; ++r.iterations) {
-    if (r.residual <= tol.solve_residual) {
+    if (r.residual <= tol.residual_at(r.point.norm())) {
       r.converged = true;
       return r;
     }
@@ -203,7 +203,7 @@ Projection solve_three_surfaces(const Polynomial& g1, const Polynomial& g2,
       J.row(k) = grad.transpose() / n;
       r.residual = std::max(r.residual, std::abs(res[k]));
     }
-    if (r.residual <= tol.solve_residual) {
+    if (r.residual <= tol.residual_at(r.point.norm())) {
       r.converged = true;
       return r;
     }
@@ -231,7 +231,7 @@ std::optional<Eigen::Vector3d> point_with_normal(const Polynomial& g, const Eige
     if (!(gn > 0)) return std::nullopt;
     const double gl = gn / tol.length_scale;
     const Eigen::Vector3d F(val / gn, grad.dot(e1) / gl, grad.dot(e2) / gl);
-    if (std::max(std::abs(F[0]), std::hypot(F[1], F[2])) <= tol.solve_residual) {
+    if (std::max(std::abs(F[0]), std::hypot(F[1], F[2])) <= tol.residual_at(p.norm())) {
       if (grad.dot(u) > 0) return p;
       return std::nullopt;
     }

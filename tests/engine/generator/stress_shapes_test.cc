@@ -213,19 +213,18 @@ TEST(StressShapes, NeedleInTheDish) {
 // states, {(fA-e1, 1)} twice, no {(fA-e1, 1), (fA-f1, 1)}): B's faces, expanded about zero
 // with coefficients ~1e10 before being recentred, were ~1e-7 off the needle's dish; parsed
 // about B's origin (parse_inequality_about, brep_builder.cc) they are the dish to the last
-// bit, and the graph had the needle's states (session 21; skipped again in session 22, below).
+// bit, and the graph had the needle's states (session 21). Skipped again in sessions 22-24 (9
+// states, {(fA-e1, 1), (fA-f1, 1)} twice; with session 24's settling fix, reverted, 8 states
+// and no {(fA-e2, 1)} -- {(fA-f2, 1)}). Session 25 found two defects of far frames: the pair
+// solves' residual stalled at the round-off of coordinates 1.3e5 (1.3e-11 to
+// 1.6e-11 against solve_residual 1.3e-11), so whether a contact had rates (the link
+// {(fA-e2, 1)} -- {(fA-f2, 1)}: "contact fA-f2 has no rates at step 6") was decided by
+// round-off (Tolerances::residual_at); and a join of two witnesses 0.04 rad apart failed on
+// its last hop, one motion step of five needle radii (transition_motion.cc,
+// kMaxLastHopPieces). With both fixed the graph is the needle's. Still open and not checked here:
+// three rim witnesses lie 1e-6 to 4e-5 rad from f1's normal, on their CF's boundary
+// (docs/paper-comparison.md, "Invariance").
 TEST(StressShapes, NeedleFarFromTheOriginAndRotated) {
-  GTEST_SKIP() << "open defect (engine/generator, witnesses on a CF's boundary), measured in "
-                  "session 22: since detection retries a region's solve that ends far away "
-                  "(contact_detection.cc), this scene's run takes another path and has 9 "
-                  "states, 30 links: {(fA-e1, 1), (fA-f1, 1)} twice. One of the two witnesses "
-                  "has its rim contact at the needle's apex (2.4985 from its centre along its "
-                  "axis), reached by slidingA+rotation from {(fA-f1, 2)}: mapped into the "
-                  "needle's own frame the same pose is classified {(fA-f1, 2)}, i.e. it lies on "
-                  "the boundary between the two CFs, and every join from it fails (straight and "
-                  "symmetry-turned motions, a roadmap of 27 nodes and 58 motions, the parameter "
-                  "path). The needle rotated about B's origin (no cancellation) and the needle "
-                  "itself have the needle's 8 states.";
   expect_needle_graph(generate(load_scene_file(stress_path("needle_far_rotated.yaml"))));
 }
 
