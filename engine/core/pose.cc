@@ -42,6 +42,14 @@ std::string Pose::str() const {
   return buf;
 }
 
+Pose between(const Pose& a, const Pose& b, double f) {
+  Pose m;
+  m.position = (1 - f) * a.position + f * b.position;
+  // Eigen's slerp takes the shorter arc (it flips the sign of a negative dot product).
+  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
+  return m;
+}
+
 Pose parse_pose(const std::string& text) {
   std::string cleaned = text;
   for (char& c : cleaned)

@@ -32,6 +32,10 @@ struct Pose {
   std::string str() const;
 };
 
+// The pose a fraction `f` of the way from a to b: positions interpolated, orientations
+// slerped along the shorter arc.
+Pose between(const Pose& a, const Pose& b, double f);
+
 // Parses "x y z qw qx qy qz" (commas allowed); the quaternion is normalised.
 // Throws UsageError naming the text when it is malformed or the quaternion is zero.
 Pose parse_pose(const std::string& text);

@@ -98,14 +98,6 @@ bool moved_either_way(const SceneGeometry& scene, const Pose& a, const Pose& b,
 
 }  // namespace
 
-Pose between(const Pose& a, const Pose& b, double f) {
-  Pose m;
-  m.position = (1 - f) * a.position + f * b.position;
-  // Eigen's slerp takes the shorter arc (it flips the sign of a negative dot product).
-  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
-  return m;
-}
-
 Pose aligned_by_symmetry(const SceneGeometry& scene, const Pose& a, const Pose& b,
                          const SceneSymmetry& sym) {
   Pose x = a;

@@ -55,10 +55,6 @@ struct SceneSymmetry {
 // relabelled (the targets a join may reach instead of b itself).
 std::vector<Pose> symmetric_images(const Pose& b, const SceneSymmetry& symmetry);
 
-// The pose a fraction `f` of the way from a to b: positions interpolated, orientations
-// slerped along the shorter arc.
-Pose between(const Pose& a, const Pose& b, double f);
-
 // `a` turned about B's axis until A's centre is over b's, then about A's own axis until the
 // orientations agree best (each turn only when that solid is one of revolution): the same
 // contacts as `a`, placed as near `b` as the symmetries allow.

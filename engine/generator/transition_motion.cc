@@ -53,14 +53,6 @@ constexpr int kMaxStalledSteps = 20;
 // straight step by second-order amounts only (a pose outside is queried in full).
 constexpr double kBracketMargin = 1.25;
 
-// The pose a fraction f of the way from a to b (positions interpolated, orientations slerped).
-Pose interpolated(const Pose& a, const Pose& b, double f) {
-  Pose m;
-  m.position = (1 - f) * a.position + f * b.position;
-  m.quaternion = a.quaternion.slerp(f, b.quaternion).normalized();
-  return m;
-}
-
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
 // The contact normal that a change on one side turns toward the new element's normal: the
@@ -823,8 +815,8 @@ bool Motion::travel_to(const Pose& to, bool by_contacts) {
         std::vector<Track> moved = tracks_;
         bool arrived = true;
         for (int k = 1; k <= pieces && arrived; ++k) {
-          const auto Y = correct(
-              k == pieces ? to : interpolated(X_, to, static_cast<double>(k) / pieces), moved);
+          const auto Y =
+              correct(k == pieces ? to : between(X_, to, static_cast<double>(k) / pieces), moved);
           arrived = Y && classify(*Y, moved).kind == Observation::Same;
         }
         if (arrived) return true;

@@ -66,14 +66,9 @@ TEST(SolvePair, RefusesWhenThePointLeavesTheFace) {
 // solve_residual, and the far needle's contact rates failed by it). Every one converges now,
 // to a contact exact to 1e-9 L.
 TEST(SolvePair, ConvergesAtTheRoundOffOfFarCoordinates) {
-  const SceneGeometry scene = build_scene_geometry(
-      parse_scene("objects:\n"
-                  "  A:\n    faces:\n      fA: \"x^2 + y^2 + z^2 <= 1\"\n"
-                  "  B:\n    faces:\n"
-                  "      fB: \"(x - 1200000)^2 + (y + 500000)^2 + (z - 200000)^2 <= 16\"\n",
-                  "far_balls.yaml"));
+  const SceneGeometry scene = testkit::far_balls_scene();
   const ElementId a = scene.A.find("fA"), b = scene.B.find("fB");
-  const Eigen::Vector3d centre(1200000, -500000, 200000);
+  const Eigen::Vector3d& centre = testkit::kFarBallsCentre;
   int converged = 0, solves = 0;
   for (int i = 0; i < 20; ++i)
     for (int j = 0; j < 20; ++j) {

@@ -1,6 +1,8 @@
 #pragma once
 // The contact tests' solids, with closed-form faces, edges and vertices (hand_built_solids.h),
 // scaled by `s` for the scale-invariance tests.
+#include "engine/geometry/scene_geometry.h"
+#include "engine/scene/scene.h"
 #include "tests/engine/contact/hand_built_solids.h"
 
 namespace pcsg::testkit {
@@ -137,6 +139,18 @@ inline MeshedSolid three_ball_solid(double rho, double d) {
 
 inline SceneGeometry scene_of(MeshedSolid A, MeshedSolid B) {
   return make_scene(std::move(A.solid), std::move(A.mesh), std::move(B.solid), std::move(B.mesh));
+}
+
+// A ball of radius 1 (A, face fA) and a ball of radius 4 (B, face fB) centred at
+// kFarBallsCentre, 1.3e6 from B's origin: 1e5 of the scene's sizes (L = 13.9).
+inline const Eigen::Vector3d kFarBallsCentre(1200000, -500000, 200000);
+inline SceneGeometry far_balls_scene() {
+  return build_scene_geometry(
+      parse_scene("objects:\n"
+                  "  A:\n    faces:\n      fA: \"x^2 + y^2 + z^2 <= 1\"\n"
+                  "  B:\n    faces:\n"
+                  "      fB: \"(x - 1200000)^2 + (y + 500000)^2 + (z - 200000)^2 <= 16\"\n",
+                  "far_balls.yaml"));
 }
 
 }  // namespace pcsg::testkit

@@ -112,17 +112,12 @@ TEST(Metamorphic, SwappingAAndBMirrorsTheLensOnBallGraph) {
   expect_mirrored(original, swapped);
 }
 
+// Skipped from session 6 to session 25 (an open defect of state identity near the rims'
+// touch): the swapped run held {(eA-eB, 1)} three times against the original's two, a third
+// region of crossing sign + with its witness 1e-6 from the rims' symmetric touch point
+// (0.7071, 0.7071, 0) not joined to the other + state. Re-measured in session 26: both runs
+// hold the same states and distinct links, mirrored.
 TEST(Metamorphic, SwappingAAndBMirrorsTheTwoLensGraph) {
-  GTEST_SKIP() << "open defect (state identity near the rims' touch, engine/generator), "
-                  "measured in session 6: since detection solves each pair from several "
-                  "starts of one overlap region (contact_detection.cc), the swapped run holds "
-                  "{(eA-eB, 1)} three times against the original's two: a third region of "
-                  "crossing sign + with its witness 1e-6 from the rims' symmetric touch point "
-                  "(0.7071, 0.7071, 0), reached by combined+rotation from {(eB-fA2, 1)} and not "
-                  "joined to the other + state; the regions next to the touch are the open "
-                  "defect of StressEdges.TwoLensesFromTheTouchingAndNearlyCollinearSeeds. "
-                  "(Before the duplicate-minimum rule (c) of drop_boundary_duplicates it also "
-                  "held {(eA-eB, 2)}, one crossing found twice 1e-5 apart.)";
   SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
   spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)
   spec.seeds.clear();

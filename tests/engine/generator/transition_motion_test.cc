@@ -1,0 +1,56 @@
+#include "engine/generator/transition_motion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/contact/contact.h"
+#include "engine/contact/contact_formation.h"
+#include "engine/geometry/scene_geometry.h"
+#include "engine/scene/scene.h"
+#include "tests/engine/contact/test_shapes.h"
+
+namespace pcsg {
+namespace {
+
+// A ball of radius 1 on a ball of radius 4 whose centre lies 1.3e6 from B's origin (1e5 of
+// the scene's sizes, L = 13.9): CF-compliant motions keep the contact through every step's
+// correction, whose residuals are evaluated at coordinates of 1.3e6: measured, every
+// correction reached keep_residual (1.39e-10) within 2 iterations, so keep_residual needs no
+// round-off floor at these sizes (at 1e6 sizes corrections took up to 30 iterations, but
+// there contact_gap itself is below the coordinates' round-off). Measured with the pair solves
+// stopping at solve_residual alone (no Tolerances::residual_at): detection found no contact at
+// the first witness.
+TEST(ConnectedWithinCf, KeepsAContactFarFromBsOrigin) {
+  const SceneGeometry scene = testkit::far_balls_scene();
+  const Eigen::Vector3d& centre = testkit::kFarBallsCentre;
+  // A touching B from direction (theta, phi), turned about that direction by `turn`
+  const auto touching = [&](double theta, double phi, double turn) {
+    const Eigen::Vector3d u(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                            std::cos(theta));
+    Pose X;
+    X.position = centre + 5 * u;
+    X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(turn, u));
+    return X;
+  };
+  int arrived = 0, motions = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Pose from = touching(0.4 + 0.3 * i, 0.5 * j, 0.2 * j);
+      const Pose to = touching(0.5 + 0.3 * i, 0.5 * j + 0.15, 0.2 * j + 0.1);
+      const ContactReport rf = detect_contacts(scene, from), rt = detect_contacts(scene, to);
+      ASSERT_FALSE(rf.penetrating());
+      ASSERT_EQ(rf.contacts.size(), 1u) << i << " " << j;
+      ASSERT_TRUE(ContactFormation::of(rt.contacts) == ContactFormation::of(rf.contacts));
+      MotionCounters counters;
+      ++motions;
+      if (!connected_within_cf(scene, from, to, ContactFormation::of(rf.contacts), counters))
+        continue;
+      ++arrived;
+      EXPECT_GT(counters.steps, 1) << i << " " << j;  // a motion in steps, not a jump
+    }
+  EXPECT_EQ(arrived, motions);
+}
+
+}  // namespace
+}  // namespace pcsg
