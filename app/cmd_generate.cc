@@ -1,4 +1,4 @@
-// pcsg generate SCENE [-o DIR] [--threads N] [--project-upward]: the point-contact state graph
+// pcsg generate SCENE [-o DIR] [--threads N] [--no-project-upward]: the point-contact state graph
 // of a scene.
 #include <algorithm>
 #include <chrono>
@@ -29,7 +29,7 @@ struct Args {
   // Every core by default: the graph does not depend on the number (GeneratorOptions).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   bool quiet = false;
-  bool project_upward = false;
+  bool no_project_upward = false;
   bool no_mirror_images = false;
 };
 
@@ -39,7 +39,7 @@ void run(const Args& a) {
   const SceneGeometry scene = build_scene_geometry(spec);
   GeneratorOptions opt;
   opt.threads = a.threads;
-  opt.project_upward = a.project_upward;
+  opt.project_upward = !a.no_project_upward;
   opt.mirror_images = !a.no_mirror_images;
   ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
@@ -83,9 +83,10 @@ void setup(CLI::App& cli) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
-  cmd->add_flag("--project-upward", args->project_upward,
-                "Also look for the states one contact above each state by projecting turned "
-                "witnesses (GeneratorOptions::project_upward)");
+  cmd->add_flag("--no-project-upward", args->no_project_upward,
+                "Leave out the search for the states one contact above each state by "
+                "projecting turned witnesses (GeneratorOptions::project_upward): faster, and "
+                "Example 1 then lacks its 3-contact state");
   cmd->add_flag("--no-mirror-images", args->no_mirror_images,
                 "Leave out the mirror images of the states that no state's region holds "
                 "(GeneratorOptions::mirror_images)");

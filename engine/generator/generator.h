@@ -26,12 +26,12 @@ struct GeneratorOptions {
   // After the growth, look for states one contact above each state that no motion or probe
   // met: its witness, turned about A's centre in kUpwardTurns ways (generator.cc), projected
   // onto each CF that adds one PtC to the state's and that the graph does not have; each new
-  // state found seeds its own LN graph. Off by default: it finds Example 1's
-  // {(fA-e1, 2), (fA-f1, 1)} in both hands and in every frame tried (with mirror_images, the
-  // same 11 states), but the moved frames' links still differ by one pair, and it costs
-  // Example 2 a third more time and the three-sphere lens nine times, for nothing new
-  // (docs/paper-comparison.md, sessions 16 and 17).
-  bool project_upward = false;
+  // state found seeds its own LN graph. On by default since session 26: Example 1's
+  // {(fA-e1, 2), (fA-f1, 1)} (both hands) and the torus's {(fA-f2, 1), (fA-e2, 2)} are found
+  // by nothing else, in every frame and unit tried (since session 21 the moved frames' links
+  // agree too); it costs Example 1 about twice the queries, and the three-sphere lens, where
+  // it finds nothing, several times its time (docs/paper-comparison.md, sessions 16 and 26).
+  bool project_upward = true;
   // When both solids have a plane of mirror symmetry (symmetry.h), add the mirror image of
   // each state's witness that no state's region holds, as a state of its own, and each link's
   // image: a configuration and its mirror image may lie in different regions of one CF

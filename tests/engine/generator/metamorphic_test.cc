@@ -124,39 +124,14 @@ TEST(Metamorphic, SwappingAAndBMirrorsTheTwoLensGraph) {
   expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
 }
 
-// Two generations of Example 1, the swapped one the slower (the bowl is then A): ~75 s of CPU.
+// Two generations of Example 1, the swapped one the slower (the bowl is then A): ~200 s of
+// CPU. Skipped from session 6 to session 25: the swapped run found the 3-contact state
+// {(fA-e1, 2), (fA-f1, 1)} (the ellipsoid across the rim and against the wall; since session
+// 17 in both hands, 11 states, 58 links) through a new contact met on a motion from
+// {(fA-e1, 1), (fA-f1, 1)}, which the original's motions never reach; the original had 9
+// states. Since session 26 the upward projections (GeneratorOptions::project_upward, now on by
+// default) find it in the original, and both runs hold the same states and links, mirrored.
 TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
-  GTEST_SKIP() << "open defect (engine/generator/seeds.cc, completeness), measured in session "
-                  "6: since detection finds every contact of a pair in one overlap region "
-                  "(contact_detection.cc), the swapped run has 10 states against the "
-                  "original's 8: it finds the 3-contact state {(fA-e1, 2), (fA-f1, 1)} (the "
-                  "ellipsoid across the rim and against the wall; its witness re-detected in "
-                  "the original scene, "
-                  "ExampleScenes.SeveralContactsOfOnePairInOneOverlapRegionAreAllFound), "
-                  "linked to {(fA-e1, 2)}, {(fA-e1, 1)}, {(fA-f2, 1)} and "
-                  "{(fA-e1, 1), (fA-f1, 1)}, and a second {(fA-e1, 1), (fA-f1, 1)} (both "
-                  "contacts near the rim, 0.055 apart). The original's seed search and upward "
-                  "probes miss it (pushing B onto A as well did not find it either), so "
-                  "Example 1's graph lacks a real state. Re-measured in session 9 (4b9df8a): "
-                  "the same 10 states and 42 links (54 s); the 3-contact state is met by a "
-                  "motion from {(fA-e1, 1), (fA-f1, 1)} (its GN link), not by the swapped "
-                  "scene's seed search, which finds single contacts and {(fA-f1, 2)} only. "
-                  "Session 14: the roadmap join (state_identity.h) proves the two "
-                  "{(fA-e1, 1), (fA-f1, 1)} witnesses one state, so the swapped run has 9 "
-                  "states and 36 links; the original's 8 still lack the 3-contact state. "
-                  "Session 16: with GeneratorOptions::project_upward (off by default, "
-                  "generator.h) the original holds it too, 9 states with the same CFs as the "
-                  "swapped run's, and 38 links against its 36 (the pair "
-                  "{(fA-e1, 2), (fA-f1, 1)} -- {(fA-f1, 2)} only in the original). "
-                  "Session 17: with the mirror images (GeneratorOptions::mirror_images) the "
-                  "swapped run holds both hands of {(fA-e1, 1), (fA-f1, 1)} and of the 3-contact "
-                  "state, 11 states and 58 links, and so does the original with "
-                  "project_upward (the same states and distinct links between CFs); by default "
-                  "the original holds 9 (no 3-contact state). Session 20: the swapped run meets "
-                  "it where the wall contact changing toward the rim sees the rim 0.24 away "
-                  "while the wall contact still holds (a new contact, Motion::classify); the "
-                  "original's motions never reach that configuration, and tipping about the "
-                  "line through two contacts and gap-closing probes did not either.";
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
   expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
 }

@@ -41,7 +41,7 @@ TEST(StressShapes, EllipsoidPoleOnTheDishTip) {
   EXPECT_NEAR(c.point_B.head<2>().norm(), 0, tol);
   EXPECT_NEAR(c.normal_B.z(), 1, 1e-12) << "unit normal along the axis to round-off";
   EXPECT_NEAR(c.gap, 0, tol);
-  expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
+  expect_graph(generate(spec, /*search_upward=*/false), kSingles, chain_of_singles());
 }
 
 TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
@@ -65,7 +65,7 @@ TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
     // the pole's depth to first order (the curvature terms are 1e-8 over 1e-4 of depth)
     EXPECT_NEAR(p.depth, kDeeper, 1e-2 * kDeeper);
   }
-  expect_graph(generate(spec, /*probe_upward=*/false), kSingles, chain_of_singles());
+  expect_graph(generate(spec, /*search_upward=*/false), kSingles, chain_of_singles());
 }
 
 // The lens (Example 2's A) has fA1 - eA - fA2; B has f1 - e1 - f2 - e2 - f3. Its single
@@ -73,8 +73,8 @@ TEST(StressShapes, EllipsoidPoleOnTheBottomTipWhereTheSphereTouchesF3) {
 // turning it over exchanges fA1 and fA2), adjacent when one of the two elements changes to an
 // adjacent one: a 3 x 5 grid of 15 CFs, 22 pairs. The rims crossing, {(eA-e1, 1)} and
 // {(eA-e2, 1)}, are two regions each (rim_crossing_sign): 17 single-contact states. Without
-// upward probes the graph also holds states of higher cardinality: a transition motion that
-// meets a new touching contact has reached one from below, and it is grown like a seed
+// upward probes (and projections) the graph also holds states of higher cardinality: a transition
+// motion that meets a new touching contact has reached one from below, and it is grown like a seed
 // (generator.cc, discoveries), so the single contacts are checked, not the whole graph. Until
 // session 8 one of the 22 pairs was always missing ({(eA-f1, 1)} -- {(fA2-f1, 1)}, then its
 // mirror {(eA-f1, 1)} -- {(fA1-f1, 1)}): each link's image under the lens turned upside down
@@ -92,7 +92,7 @@ TEST(StressShapes, LensTipOnTheDishTip) {
     }
   ASSERT_EQ(adj.size(), 22u);
   states.insert(states.end(), {"{(eA-e1, 1)}", "{(eA-e2, 1)}"});
-  const Generated g = generate(spec, /*probe_upward=*/false);
+  const Generated g = generate(spec, /*search_upward=*/false);
   ASSERT_EQ(g.graph.states.at(0).cf.str(g.scene), "{(fA1-f1, 1)}");
   std::vector<std::string> singles;
   for (const State& s : g.graph.states)

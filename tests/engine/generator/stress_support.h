@@ -23,12 +23,14 @@ struct Generated {
 };
 
 // Two threads: the graph does not depend on the count (generator.h), the run time does.
-// Without `probe_upward` the graph is the seeds' LN graphs (paper Section III) alone.
-inline Generated generate(const SceneSpec& spec, bool probe_upward = true) {
+// Without `search_upward` (the upward probes and projections) the graph is the seeds' LN
+// graphs (paper Section III) alone.
+inline Generated generate(const SceneSpec& spec, bool search_upward = true) {
   Generated g{build_scene_geometry(spec), {}};
   GeneratorOptions opt;
   opt.threads = 2;
-  opt.probe_upward = probe_upward;
+  opt.probe_upward = search_upward;
+  opt.project_upward = search_upward;
   g.graph = generate_graph(g.scene, opt);
   return g;
 }
