@@ -59,12 +59,16 @@ TEST(GenerateCommand, NoProjectUpwardFlagLeavesOutExample1sThreeContactState) {
 }
 
 // --no-mirror-images clears GeneratorOptions::mirror_images: Example 1 then holds one hand of
-// {(fA-e1, 1), (fA-f1, 1)} (8 states, as before session 17) and asks no query for images.
+// {(fA-e1, 1), (fA-f1, 1)} and one of the 3-contact {(fA-e1, 2), (fA-f1, 1)} (9 states; 8
+// before session 26's upward projections) and asks no query for images.
 TEST(GenerateCommand, NoMirrorImagesFlagLeavesOutTheOtherHand) {
   const fs::path dir = fresh_dir("nomirror");
   const ExeRun r = run_pcsg("generate -q --no-mirror-images " + example1() + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("8 states"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("9 states"), std::string::npos) << r.out;
+  const std::string three = "{(fA-e1, 2), (fA-f1, 1)}";
+  EXPECT_NE(r.out.find(three), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(three, r.out.find(three) + 1), std::string::npos) << "one hand: " << r.out;
   EXPECT_EQ(
       graph_without_time(dir)["stats"]["collision_queries_by_phase"]["mirror images"].get<long>(),
       0);
