@@ -27,7 +27,7 @@ struct GeneratorOptions {
   // met: its witness, turned about A's centre in kUpwardTurns ways (generator.cc), projected
   // onto each CF that adds one PtC to the state's and that the graph does not have; each new
   // state found seeds its own LN graph. On by default since session 26: Example 1's
-  // {(fA-e1, 2), (fA-f1, 1)} (both hands) and the torus's {(fA-f2, 1), (fA-e2, 2)} are found
+  // {(fA-e1, 2), (fA-f1, 1)} (both hands) and the torus's {(fA-e2, 2), (fA-f2, 1)} are found
   // by nothing else, in every frame and unit tried (since session 21 the moved frames' links
   // agree too); it costs Example 1 about twice the queries, and the three-sphere lens, where
   // it finds nothing, several times its time (docs/paper-comparison.md, sessions 16 and 26).

@@ -19,8 +19,7 @@ namespace {
 using testing::Generated;
 
 const Generated& torus() {
-  static const Generated g =
-      testing::generate(load_scene_file(testing::scene_path("torus.yaml")));
+  static const Generated g = testing::generate(load_scene_file(testing::scene_path("torus.yaml")));
   return g;
 }
 
@@ -30,13 +29,9 @@ const Generated& torus() {
 // of the tests below (one process each).
 const Generated& three_spheres() {
   static const Generated g = [] {
-    Generated out{build_scene_geometry(load_scene_file(testing::scene_path("three_spheres.yaml"))),
-                  {}};
     GeneratorOptions opt;
-    opt.threads = 2;
     opt.project_upward = false;
-    out.graph = generate_graph(out.scene, opt);
-    return out;
+    return testing::generate(load_scene_file(testing::scene_path("three_spheres.yaml")), opt);
   }();
   return g;
 }
@@ -151,9 +146,9 @@ TEST(TorusGraph, RestsOnTheConvexBottomThroughItsHole) {
 // A's rotation by 120 degrees about the axis of its triangle (x, y) = (0.5, sqrt(3)/6) maps
 // s1 -> s2 -> s3 -> s1, hence e12 -> e_s2_s3 -> e_s1_s3 -> e12, and fixes both vertices.
 std::string rotated_name(const std::string& n) {
-  static const std::map<std::string, std::string> m = {
-      {"s1", "s2"}, {"s2", "s3"}, {"s3", "s1"},
-      {"e12", "e_s2_s3"}, {"e_s2_s3", "e_s1_s3"}, {"e_s1_s3", "e12"}};
+  static const std::map<std::string, std::string> m = {{"s1", "s2"},           {"s2", "s3"},
+                                                       {"s3", "s1"},           {"e12", "e_s2_s3"},
+                                                       {"e_s2_s3", "e_s1_s3"}, {"e_s1_s3", "e12"}};
   auto it = m.find(n);
   return it == m.end() ? n : it->second;
 }
@@ -215,8 +210,7 @@ TEST(ThreeSpheresGraph, StatesAreClosedUnderTheLensMirrorSymmetry) {
   const std::set<std::string> got = cfs_of(g);
   for (const State& s : g.graph.states) {
     const std::string r = mapped_cf(s.cf, g.scene, mirrored_name);
-    EXPECT_TRUE(got.count(r)) << s.cf.str(g.scene) << " is found but its mirror " << r
-                              << " is not";
+    EXPECT_TRUE(got.count(r)) << s.cf.str(g.scene) << " is found but its mirror " << r << " is not";
   }
 }
 

@@ -23,16 +23,20 @@ struct Generated {
 };
 
 // Two threads: the graph does not depend on the count (generator.h), the run time does.
+inline Generated generate(const SceneSpec& spec, GeneratorOptions opt) {
+  Generated g{build_scene_geometry(spec), {}};
+  opt.threads = 2;
+  g.graph = generate_graph(g.scene, opt);
+  return g;
+}
+
 // Without `search_upward` (the upward probes and projections) the graph is the seeds' LN
 // graphs (paper Section III) alone.
 inline Generated generate(const SceneSpec& spec, bool search_upward = true) {
-  Generated g{build_scene_geometry(spec), {}};
   GeneratorOptions opt;
-  opt.threads = 2;
   opt.probe_upward = search_upward;
   opt.project_upward = search_upward;
-  g.graph = generate_graph(g.scene, opt);
-  return g;
+  return generate(spec, opt);
 }
 
 inline std::string adjacent_pair(const std::string& a, const std::string& b) {
@@ -100,7 +104,8 @@ inline int rim_crossing_sign(const State& s, const std::string& pair, const Scen
 inline void expect_both_crossing_regions(const Generated& g, const std::string& pair) {
   std::vector<int> signs;
   for (const State& s : g.graph.states)
-    if (s.cf.str(g.scene) == "{(" + pair + ", 1)}") signs.push_back(rim_crossing_sign(s, pair, g.scene));
+    if (s.cf.str(g.scene) == "{(" + pair + ", 1)}")
+      signs.push_back(rim_crossing_sign(s, pair, g.scene));
   std::sort(signs.begin(), signs.end());
   EXPECT_EQ(signs, (std::vector<int>{-1, 1})) << pair << ": one region of each crossing sign";
 }
