@@ -479,6 +479,15 @@ void add_unsolved_penetrations(const SceneGeometry& scene, const Pose& X_BA,
   }
 }
 
+// A report as DetectOptions::stop_at_penetration gives it: the first penetration alone.
+void cut_at_first_penetration(ContactReport& report) {
+  report.penetrations.resize(1);
+  report.contacts.clear();
+  report.near.clear();
+  report.failed_solves = 0;
+  report.cut_short = true;
+}
+
 // detect_contacts without the recent reports.
 ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
                           const DetectOptions& options) {
@@ -540,6 +549,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
         dup = dup || (p.a == pen->a && p.b == pen->b &&
                       (p.point_B - pen->point_B).norm() <= tol.distinct_points);
       if (!dup) report.penetrations.push_back(*pen);
+      if (options.stop_at_penetration) cut_at_first_penetration(report);
       return Found::Penetration;
     }
     if (out) *out = pc;
@@ -555,6 +565,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
     for (const Candidate& c : regions.candidates[r]) {
       PointContact first;
       const Found found = solve_from(r, c, c.pair, &first);
+      if (report.cut_short) return report;
       const bool wandered = found == Found::Minimum && first.gap > region_gap;
       if ((found == Found::Failed || found == Found::Saddle || wandered) &&
           c.a.kind == ElementKind::Face && c.b.kind == ElementKind::Face)
@@ -585,6 +596,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
         centres.push_back(midpoints[end]);
         PointContact more;
         if (solve_from(r, c, end, &more) == Found::Minimum) centres.push_back(more.point_B);
+        if (report.cut_short) return report;
         spread = tol.seed_separation;
       }
     }
@@ -596,9 +608,17 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
       if (auto pen = deepest_face_points(ctx, X_BA, pairs, regions.region_of, r, *c)) {
         penetrates[r] = true;
         report.penetrations.push_back(*pen);
+        if (options.stop_at_penetration) {
+          cut_at_first_penetration(report);
+          return report;
+        }
       }
     }
   add_unsolved_penetrations(scene, X_BA, pairs, regions, penetrates, report);
+  if (options.stop_at_penetration && report.penetrating()) {
+    cut_at_first_penetration(report);
+    return report;
+  }
 
   drop_boundary_duplicates(scene, minima);
   for (PointContact& c : minima) {
@@ -624,8 +644,11 @@ ContactReport detect_contacts(const ContactContext& ctx, const Pose& X_BA,
   // a repeated query (the pose bit for bit, the same margin) gets the report it got before
   if (!options.recall) return detect_anew(ctx, X_BA, options);
   const ReportCache::Key key = ReportCache::key(X_BA, options.near_margin);
-  if (std::optional<ContactReport> known = ctx.recent_reports().recall(key)) {
+  std::optional<ContactReport> known = ctx.recent_reports().recall(key);
+  if (known && (!known->cut_short || options.stop_at_penetration)) {
     known->recalled = true;
+    // the answer a query stopping at its first penetration gets, whatever the cache held
+    if (options.stop_at_penetration && known->penetrating()) cut_at_first_penetration(*known);
     return std::move(*known);
   }
   ContactReport report = detect_anew(ctx, X_BA, options);

@@ -30,7 +30,12 @@ std::optional<ContactReport> ReportCache::recall(const Key& key) const {
 
 void ReportCache::remember(const Key& key, const ContactReport& report) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!reports_.emplace(key, report).second) return;  // another thread was first
+  const auto [it, added] = reports_.emplace(key, report);
+  if (!added) {
+    // another thread was first; a full report replaces one cut short at its first penetration
+    if (it->second.cut_short && !report.cut_short) it->second = report;
+    return;
+  }
   order_.push_back(key);
   if (order_.size() > capacity_) {
     reports_.erase(order_.front());

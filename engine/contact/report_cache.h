@@ -24,7 +24,9 @@ class ReportCache {
 
   explicit ReportCache(size_t capacity) : capacity_(capacity) {}
   std::optional<ContactReport> recall(const Key& key) const;
-  // Keeps the report, dropping the oldest when full.
+  // Keeps the report, dropping the oldest when full. A report cut short at its first
+  // penetration (ContactReport::cut_short) answers only queries that stop there too, and a full
+  // report of the same query replaces it.
   void remember(const Key& key, const ContactReport& report);
 
  private:

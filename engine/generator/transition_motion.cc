@@ -301,6 +301,9 @@ Observation Motion::classify(const Pose& Y, const std::vector<Track>& tracks,
   ++counters_.detections;
   DetectOptions options;
   options.nearby = nearby;
+  // A penetration ends the observation with its first penetration alone; a motion watched
+  // frame by frame (an observer) gets every contact at its collision frame too.
+  options.stop_at_penetration = !observer_;
   const ContactReport rep = detect_contacts(*context_, Y, options);
   obs.contacts = rep.contacts;
   if (rep.penetrating()) {

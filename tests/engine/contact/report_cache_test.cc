@@ -64,6 +64,58 @@ TEST(ReportCache, AnotherPoseOrMarginIsQueriedAnew) {
   expect_same_report(again, detect_contacts(ctx, Y));
 }
 
+// A query that stops at its first penetration (a motion's collision verdict) gets the first
+// penetration of the full report alone, whichever report the cache held; a full query is
+// never answered by a report cut short, and its answer replaces that one.
+TEST(ReportCache, ReportsCutShortAtAPenetrationAnswerOnlyQueriesThatStopThere) {
+  const SceneGeometry scene =
+      testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid(1));
+  const double L = scene.tol.length_scale;
+  Pose X = resting_pose();
+  X.position.z() -= 1e-2 * L;  // both f-f contacts sunk into the dish
+  DetectOptions fresh;
+  fresh.recall = false;
+  const ContactReport full = detect_contacts(ContactContext(scene), X, fresh);
+  ASSERT_EQ(full.penetrations.size(), 2u);
+  EXPECT_FALSE(full.cut_short);
+  DetectOptions stop;
+  stop.stop_at_penetration = true;
+  auto expect_first_alone = [&](const ContactReport& r) {
+    EXPECT_TRUE(r.cut_short);
+    ASSERT_EQ(r.penetrations.size(), 1u);
+    EXPECT_TRUE(r.penetrations[0].a == full.penetrations[0].a &&
+                r.penetrations[0].b == full.penetrations[0].b);
+    EXPECT_EQ(r.penetrations[0].point_B, full.penetrations[0].point_B);  // bit for bit
+    EXPECT_EQ(r.penetrations[0].depth, full.penetrations[0].depth);
+    EXPECT_TRUE(r.contacts.empty() && r.near.empty());
+  };
+  {
+    const ContactContext ctx(scene);
+    const ContactReport cut = detect_contacts(ctx, X, stop);  // detected, cut short
+    EXPECT_FALSE(cut.recalled);
+    expect_first_alone(cut);
+    expect_first_alone(detect_contacts(ctx, X, stop));    // recalled
+    const ContactReport whole = detect_contacts(ctx, X);  // not from the cut one
+    EXPECT_FALSE(whole.recalled);
+    EXPECT_FALSE(whole.cut_short);
+    expect_same_report(whole, full);
+    EXPECT_TRUE(detect_contacts(ctx, X).recalled);  // the full one replaced it
+  }
+  {
+    const ContactContext ctx(scene);
+    detect_contacts(ctx, X);  // the full report first
+    const ContactReport cut = detect_contacts(ctx, X, stop);
+    EXPECT_TRUE(cut.recalled);
+    expect_first_alone(cut);
+  }
+  // Where nothing penetrates, stopping changes nothing.
+  const ContactContext ctx(scene);
+  const ContactReport resting = detect_contacts(ctx, resting_pose(), stop);
+  EXPECT_FALSE(resting.cut_short);
+  ASSERT_EQ(resting.contacts.size(), 2u);
+  expect_same_report(resting, detect_contacts(ContactContext(scene), resting_pose(), fresh));
+}
+
 TEST(ReportCache, KeepsAtMostItsCapacityDroppingTheOldest) {
   ReportCache cache(2);
   ContactReport r;
