@@ -3,8 +3,9 @@
 // pose again and again (a motion's last step and its end check, a witness and the motions and
 // connectivity checks that start from it): 2337 of Example 1's 14603 queries repeated a pose
 // bit for bit, 1800 of them within the last 64 queries. A report is a pure function of the
-// context and the query (pose and near margin), so a recalled report is the one the query
-// would return, and results do not depend on what the cache holds (nor on threads).
+// context and the query (pose, near margin, and whether it stops at its first penetration:
+// detect_contacts cuts a recalled full report to that form), so a recalled report is the one
+// the query would return, and results do not depend on what the cache holds (nor on threads).
 #include <array>
 #include <cstdint>
 #include <deque>
