@@ -100,6 +100,15 @@ MeshIndex build_index(const Solid& solid, const SolidMesh& mesh, double reach) {
     idx.neighbors.insert(idx.neighbors.end(), nb.begin(), nb.end());
     idx.neighbor_offsets.push_back(static_cast<int>(idx.neighbors.size()));
   }
+  idx.face_vertices.resize(solid.faces.size());
+  for (size_t f = 0; f < solid.faces.size(); ++f) {
+    std::vector<bool> used(mesh.positions.size(), false);
+    for (int t = 0; t < T; ++t)
+      if (mesh.triangle_face[t] == static_cast<int>(f))
+        for (int k = 0; k < 3; ++k) used[mesh.triangles[t][k]] = true;
+    for (size_t v = 0; v < used.size(); ++v)
+      if (used[v]) idx.face_vertices[f].push_back(static_cast<int>(v));
+  }
   return idx;
 }
 

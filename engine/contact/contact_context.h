@@ -31,6 +31,9 @@ struct MeshIndex {
   // Per triangle, the triangles sharing a vertex with it (CSR), for grouping overlaps.
   std::vector<int> neighbor_offsets;
   std::vector<int> neighbors;
+  // Per face of the solid, the mesh vertices of its triangles, ascending (pair_local_minima's
+  // starts: listed once here instead of by a scan of every triangle at each call).
+  std::vector<std::vector<int>> face_vertices;
   int triangle_count() const { return static_cast<int>(centroids.size()); }
 };
 

@@ -11,21 +11,19 @@ namespace {
 // and a dozen separated starts cover each basin with room to spare.
 constexpr int kStarts = 12;
 
-// Points of an element in its solid's frame: a face's mesh vertices, an edge's exact samples,
-// a vertex's point.
-std::vector<Eigen::Vector3d> samples_of(const Solid& solid, const SolidMesh& mesh, ElementId id) {
+// Points of an element in its solid's frame: a face's mesh vertices (ascending), an edge's
+// exact samples, a vertex's point.
+std::vector<Eigen::Vector3d> samples_of(const Solid& solid, const SolidMesh& mesh,
+                                        const MeshIndex& index, ElementId id) {
   std::vector<Eigen::Vector3d> out;
   if (id.kind == ElementKind::Vertex) {
     out.push_back(solid.vertices[id.index].point);
   } else if (id.kind == ElementKind::Edge) {
     for (const CurveSample& s : solid.edges[id.index].samples) out.push_back(s.point);
   } else {
-    std::vector<bool> used(mesh.positions.size(), false);
-    for (size_t t = 0; t < mesh.triangles.size(); ++t)
-      if (mesh.triangle_face[t] == id.index)
-        for (int k = 0; k < 3; ++k) used[mesh.triangles[t][k]] = true;
-    for (size_t v = 0; v < used.size(); ++v)
-      if (used[v]) out.push_back(mesh.positions[v]);
+    const std::vector<int>& vertices = index.face_vertices[id.index];
+    out.reserve(vertices.size());
+    for (int v : vertices) out.push_back(mesh.positions[v]);
   }
   return out;
 }
@@ -50,8 +48,8 @@ std::pair<Eigen::Vector3d, double> first_order_foot(const Polynomial& g, const E
 std::vector<PointContact> pair_local_minima(const ContactContext& context, const Pose& X_BA,
                                             ElementId a, ElementId b, PtcType type) {
   const SceneGeometry& scene = context.scene();
-  const std::vector<Eigen::Vector3d> SA = samples_of(scene.A, scene.mesh_A, a);
-  const std::vector<Eigen::Vector3d> SB = samples_of(scene.B, scene.mesh_B, b);
+  const std::vector<Eigen::Vector3d> SA = samples_of(scene.A, scene.mesh_A, context.index_A(), a);
+  const std::vector<Eigen::Vector3d> SB = samples_of(scene.B, scene.mesh_B, context.index_B(), b);
   std::vector<Start> starts;
   if (b.kind == ElementKind::Face) {
     // A's samples against B's face surface.
