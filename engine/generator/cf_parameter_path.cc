@@ -248,8 +248,8 @@ std::vector<double> away_from_touch(double from, double to) {
 bool walk(const SceneGeometry& scene, const Pose& a, const PointContact& ca, const Pose& target,
           const PointContact& cb, const ContactFormation& cf, const RegionSignature& signature,
           MotionCounters& counters) {
-  // A's size as motions measure it (transition_motion.cc's Motion)
-  const double size = std::max(scene.A.bbox.diagonal().norm() / 2, scene.tol.length_scale * 1e-3);
+  // the size motions measure with (twist_frame.h)
+  const double size = ReferenceBody(scene).size;
   const double residual = scene.tol.solve_residual;
   const ContactChart c0 =
       chart_of(scene, a, ca, face_reference(normal_in_A(a, ca)), face_reference(ca.normal_B));

@@ -21,8 +21,8 @@ struct Track {
   Phase phase = Phase::Drive;
   int settle_left = 0;
   ElementId left;  // after an event: the element the contact left on the changing side
-  // Drive progress: the best distance to the goal so far (a length, or an angle times A's
-  // size for rotations) and the steps since it last improved.
+  // Drive progress: the best distance to the goal so far (a length, or an angle times the
+  // reference size for rotations) and the steps since it last improved.
   double best_to_goal = std::numeric_limits<double>::infinity();
   int stalled = 0;
 };
@@ -35,8 +35,8 @@ constexpr int kBisections = 30;
 constexpr int kCorrectionIterations = 30;
 // A step that cannot be corrected is halved at most this many times before giving up.
 constexpr int kMaxHalvings = 6;
-// Motions longer than this many times A's size are abandoned (none of the paper's
-// transitions travels more than ~2 sizes).
+// Motions longer than this many times the reference body's size (twist_frame.h) are
+// abandoned (none of the paper's transitions travels more than ~2 sizes).
 constexpr double kMaxTravelSizes = 12.0;
 // A detected contact is matched to a tracked one of the same pair within this many steps.
 constexpr double kMatchSteps = 3.0;
@@ -97,11 +97,17 @@ class Motion {
   Motion(const SceneGeometry& scene, const Pose& start, std::vector<Track> tracks,
          const ContactFormation& target, const MotionVariant& variant, MotionCounters& counters,
          const MotionObserver& observer)
-      : scene_(scene), tracks_(std::move(tracks)), target_(target), variant_(variant),
-        counters_(counters), observer_(observer), X_(start),
-        context_(cached_contact_context(scene)) {
+      : scene_(scene),
+        tracks_(std::move(tracks)),
+        target_(target),
+        variant_(variant),
+        counters_(counters),
+        observer_(observer),
+        X_(start),
+        context_(cached_contact_context(scene)),
+        reference_(scene) {
     h_ = scene.tol.motion_step;
-    size_ = std::max(scene.A.bbox.diagonal().norm() / 2, scene.tol.length_scale * 1e-3);
+    size_ = reference_.size;
     max_steps_ = static_cast<int>(kMaxTravelSizes * size_ / h_) + 10 * kSettleSteps;
   }
 
@@ -119,7 +125,7 @@ class Motion {
                                  const std::function<double()>& progress);
 
  private:
-  TwistFrame frame_at(const Pose& X) const { return {X.apply(scene_.A.bbox.center()), size_}; }
+  TwistFrame frame_at(const Pose& X) const { return reference_.frame_at(X); }
   bool resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const;
   // Re-projects Y onto the maintained contacts. On failure, `lost` names the contact whose
   // pair solve failed (its point left its element), or is -1 when Newton did not converge.
@@ -155,8 +161,8 @@ class Motion {
   // The exact state of the contacts met at X_ (a new contact appeared), when it is one.
   std::optional<Discovery> discover(const std::vector<PointContact>& contacts) const;
   // How far a changing contact still is from its goal: the distance of its point to the goal
-  // element when approaching one, A's size times the angle between the contact normal and the
-  // goal's when leaving an edge or vertex by rotation.
+  // element when approaching one, the reference size times the angle between the contact
+  // normal and the goal's when leaving an edge or vertex by rotation.
   double distance_to_goal(const Track& t) const;
   // The unit tangent, in its solid's frame, of the edge on A's side (on_a) or B's side of a
   // contact (zero when that side is not an edge).
@@ -173,6 +179,7 @@ class Motion {
   const MotionObserver& observer_;
   Pose X_;
   std::shared_ptr<const ContactContext> context_;
+  ReferenceBody reference_;  // the twists' origin and length scale
   double h_ = 0, size_ = 1;
   int max_steps_ = 0, step_ = 0;
   bool used_rotation_drive_ = false;
@@ -761,11 +768,14 @@ MotionOutcome Motion::run() {
 }
 
 bool Motion::travel_to(const Pose& to, bool by_contacts) {
-  const Eigen::Vector3d centre_A = scene_.A.bbox.center();
-  // Remaining motion as a scaled twist about A's centre.
+  // Remaining motion as a scaled twist about the reference body's centre.
   auto remaining = [&](const Pose& X) {
     Twist s;
-    s.head<3>() = to.apply(centre_A) - X.apply(centre_A);
+    // the displacement of A's point at the reference centre
+    s.head<3>() =
+        reference_.is_a
+            ? Eigen::Vector3d(to.apply(reference_.centre) - X.apply(reference_.centre))
+            : Eigen::Vector3d(to.apply(X.apply_inverse(reference_.centre)) - reference_.centre);
     const Eigen::AngleAxisd aa(to.quaternion * X.quaternion.conjugate());
     s.tail<3>() = aa.axis() * aa.angle() * size_;
     return s;
@@ -970,9 +980,9 @@ std::optional<Discovery> probe_for_contact(const SceneGeometry& scene, const Pos
   const Eigen::Vector3d centre_A = scene.A.bbox.center();
   // Translate A's centre toward the goal.
   return m.probe(
-      [&](const TwistFrame& F) {
+      [&](const TwistFrame&) {  // a translation: every point of A moves alike
         Twist t = Twist::Zero();
-        t.head<3>() = goal_B - F.origin_B;
+        t.head<3>() = goal_B - m.pose().apply(centre_A);
         return t;
       },
       [&] { return (goal_B - m.pose().apply(centre_A)).norm(); });
@@ -987,7 +997,7 @@ std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pos
   Motion m(scene, start, std::move(tracks), cf, MotionVariant{}, counters, nullptr);
   const Eigen::Vector3d axis = axis_B.normalized();
   // Turn about the pivot contact's current point; progress is the turn still to go, as a
-  // length at A's size (at most half a turn).
+  // length at the reference size (at most half a turn).
   const Eigen::Quaterniond q0 = start.quaternion;
   return m.probe(
       [&](const TwistFrame& F) {

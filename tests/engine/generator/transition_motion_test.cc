@@ -8,6 +8,7 @@
 #include "engine/contact/contact_formation.h"
 #include "engine/geometry/scene_geometry.h"
 #include "engine/scene/scene.h"
+#include "engine/scene/scene_swap.h"
 #include "tests/engine/contact/test_shapes.h"
 
 namespace pcsg {
@@ -50,6 +51,41 @@ TEST(ConnectedWithinCf, KeepsAContactFarFromBsOrigin) {
       EXPECT_GT(counters.steps, 1) << i << " " << j;  // a motion in steps, not a jump
     }
   EXPECT_EQ(arrived, motions);
+}
+
+}  // namespace
+}  // namespace pcsg
+
+namespace pcsg {
+namespace {
+
+// The twists' reference body is the smaller object, the same physical centre and size
+// whichever object is called A: in Example 1 the ellipsoid (A, half-diagonal 3.08 against the
+// bowl's 6.51), in the swapped scene again the ellipsoid, now B.
+TEST(ReferenceBody, IsTheSmallerObjectWhicheverIsCalledA) {
+  const SceneSpec spec = load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/example1.yaml");
+  const SceneGeometry scene = build_scene_geometry(spec);
+  const SceneGeometry swapped = build_scene_geometry(swap_objects(spec));
+  const ReferenceBody r(scene), rs(swapped);
+  EXPECT_TRUE(r.is_a);
+  EXPECT_FALSE(rs.is_a);
+  EXPECT_NEAR(r.size, std::sqrt(2.0 * 2.0 + 3.0 * 3.0 + 5.0 * 5.0) / 2, 1e-12);
+  EXPECT_NEAR(rs.size, r.size, 1e-12 * r.size);
+  // at a pose X of A in B and its inverse in the swapped scene, the same physical point
+  Pose X;
+  X.position = Eigen::Vector3d(0.3, -1.2, 2.5);
+  X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized()));
+  Pose Xs;
+  Xs.quaternion = X.quaternion.conjugate();
+  Xs.position = -(Xs.quaternion * X.position);
+  const Eigen::Vector3d p = X.apply_inverse(r.centre_B(X));  // in the ellipsoid's frame
+  EXPECT_LE((p - rs.centre_B(Xs)).norm(), 1e-12 * scene.tol.length_scale);
+  // a tie keeps A
+  SceneSpec twins = spec;
+  twins.B = spec.A;
+  twins.B.name = "B";
+  const SceneGeometry tie = build_scene_geometry(twins);
+  EXPECT_TRUE(ReferenceBody(tie).is_a);
 }
 
 }  // namespace
