@@ -21,6 +21,8 @@ struct Pose {
   Eigen::Vector3d apply_inverse(const Eigen::Vector3d& p_B) const {
     return quaternion.conjugate() * (p_B - position);
   }
+  // X^-1: the pose of B's frame in A's (R^T, -R^T t).
+  Pose inverse() const { return {-(quaternion.conjugate() * position), quaternion.conjugate()}; }
   Eigen::Isometry3d isometry() const;
   // A new pose displaced by the twist (v, w) given in B's frame: the rotation w (axis-angle)
   // is about the point `about_B`, then the translation v is added.

@@ -107,14 +107,13 @@ class Motion {
         context_(cached_contact_context(scene)),
         reference_(scene) {
     h_ = scene.tol.motion_step;
-    size_ = reference_.size;
-    max_steps_ = static_cast<int>(kMaxTravelSizes * size_ / h_) + 10 * kSettleSteps;
+    max_steps_ = static_cast<int>(kMaxTravelSizes * reference_.size / h_) + 10 * kSettleSteps;
   }
 
   MotionOutcome run();
   const Pose& pose() const { return X_; }
   const PointContact& contact(int i) const { return tracks_[i].c; }
-  double size() const { return size_; }
+  double size() const { return reference_.size; }
   // CF-compliant travel toward `to` keeping every tracked contact (all Keep). With
   // `by_contacts` the drive moves each contact's points on A and on B toward the target's
   // (sliding and rolling over the elements); otherwise it moves the pose straight toward it.
@@ -180,7 +179,7 @@ class Motion {
   Pose X_;
   std::shared_ptr<const ContactContext> context_;
   ReferenceBody reference_;  // the twists' origin and length scale
-  double h_ = 0, size_ = 1;
+  double h_ = 0;
   int max_steps_ = 0, step_ = 0;
   bool used_rotation_drive_ = false;
 };
@@ -242,7 +241,7 @@ double Motion::distance_to_goal(const Track& t) const {
   }
   const Eigen::Vector3d n = changing_side_normal(scene_, X_, t.c, on_a);
   const double cosine = std::clamp(n.dot(cone_middle(S, goal, x)), -1.0, 1.0);
-  return size_ * std::acos(cosine);
+  return reference_.size * std::acos(cosine);
 }
 
 void Motion::measure_midpoint(const Pose& X, const Pose& Y) {
@@ -446,14 +445,15 @@ bool Motion::add_drive(const Track& t, const TwistFrame& F, DriveSystem& sys) {
   const Eigen::Vector3d n = changing_side_normal(scene_, X_, t.c, on_a);
   const Eigen::Matrix<double, 3, 6>& dx = on_a ? rates->point_A : rates->point_B;
   const Eigen::Matrix<double, 3, 6>& dx_other = on_a ? rates->point_B : rates->point_A;
-  Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * size_;
+  Eigen::Matrix<double, 3, 6> dn = (on_a ? rates->normal_A : rates->normal_B) * reference_.size;
   if (!on_a && t.c.type == PtcType::EETouch) {
     // A's rim bisector turns with A (the touch's normal_B, B's own bisector, does not)
     const double eps = scene_.tol.rate_step;
     for (int i = 0; i < 6; ++i) {
       Twist e = Twist::Zero();
       e[i] = eps;
-      dn.col(i) = (changing_side_normal(scene_, F.apply(X_, e), t.c, false) - n) / eps * size_;
+      dn.col(i) =
+          (changing_side_normal(scene_, F.apply(X_, e), t.c, false) - n) / eps * reference_.size;
     }
   }
   // Toward a lower-dimensional element (face to edge, edge to vertex) or away from one: in
@@ -777,7 +777,7 @@ bool Motion::travel_to(const Pose& to, bool by_contacts) {
             ? Eigen::Vector3d(to.apply(reference_.centre) - X.apply(reference_.centre))
             : Eigen::Vector3d(to.apply(X.apply_inverse(reference_.centre)) - reference_.centre);
     const Eigen::AngleAxisd aa(to.quaternion * X.quaternion.conjugate());
-    s.tail<3>() = aa.axis() * aa.angle() * size_;
+    s.tail<3>() = aa.axis() * aa.angle() * reference_.size;
     return s;
   };
   // The target's contacts, matched to the tracked ones by pair (nearest point).
@@ -1040,7 +1040,9 @@ MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& star
                                     const ContactFormation& target, const MotionVariant& variant,
                                     MotionCounters& counters, const MotionObserver& observer) {
   std::vector<Track> tracks;
-  for (size_t i = 0; i < contacts.size(); ++i) tracks.push_back(Track{contacts[i], plan[i], Phase::Drive, 0, ElementId{}, std::numeric_limits<double>::infinity(), 0});
+  for (size_t i = 0; i < contacts.size(); ++i)
+    tracks.push_back(Track{contacts[i], plan[i], Phase::Drive, 0, ElementId{},
+                           std::numeric_limits<double>::infinity(), 0});
   Motion m(scene, start, std::move(tracks), target, variant, counters, observer);
   return m.run();
 }

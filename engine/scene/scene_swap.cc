@@ -8,14 +8,6 @@ namespace {
 
 constexpr std::string_view kSwappedSuffix = " (A and B swapped)";
 
-// X^-1 for a rigid pose: R^T, -R^T t; canonical so that equal poses print equally.
-Pose inverse(const Pose& X) {
-  Pose inv;
-  inv.quaternion = X.quaternion.conjugate();
-  inv.position = -(inv.quaternion * X.position);
-  return inv.canonical();
-}
-
 }  // namespace
 
 SceneSpec swap_objects(const SceneSpec& scene) {
@@ -30,7 +22,8 @@ SceneSpec swap_objects(const SceneSpec& scene) {
     out.name = n.substr(0, n.size() - kSwappedSuffix.size());
   else
     out.name = n + std::string(kSwappedSuffix);
-  for (SeedSpec& seed : out.seeds) seed.pose = inverse(seed.pose);
+  for (SeedSpec& seed : out.seeds)
+    seed.pose = seed.pose.inverse().canonical();  // canonical: equal poses print equally
   return out;
 }
 

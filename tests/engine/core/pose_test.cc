@@ -27,5 +27,16 @@ TEST(Pose, DisplacedRotatesAboutThePoint) {
   EXPECT_TRUE(Y.position.isApprox(Eigen::Vector3d(0, 1, 0), 1e-12));
 }
 
+// X^-1 undoes X on points (and X on X^-1), and maps B's origin to -R^T t.
+TEST(Pose, InverseUndoesThePose) {
+  const Pose X = parse_pose("0.3 -1.2 2.5, 0.9 0.1 -0.3 0.2");
+  const Pose Xi = X.inverse();
+  const Eigen::Vector3d p(0.4, 2, -7);
+  EXPECT_TRUE(Xi.apply(X.apply(p)).isApprox(p, 1e-14));
+  EXPECT_TRUE(X.apply(Xi.apply(p)).isApprox(p, 1e-14));
+  EXPECT_TRUE(Xi.apply(Eigen::Vector3d::Zero()).isApprox(X.apply_inverse(Eigen::Vector3d::Zero())));
+  EXPECT_TRUE(Xi.inverse().position.isApprox(X.position, 1e-14));
+}
+
 }  // namespace
 }  // namespace pcsg

@@ -53,12 +53,6 @@ TEST(ConnectedWithinCf, KeepsAContactFarFromBsOrigin) {
   EXPECT_EQ(arrived, motions);
 }
 
-}  // namespace
-}  // namespace pcsg
-
-namespace pcsg {
-namespace {
-
 // The twists' reference body is the smaller object, the same physical centre and size
 // whichever object is called A: in Example 1 the ellipsoid (A, half-diagonal 3.08 against the
 // bowl's 6.51), in the swapped scene again the ellipsoid, now B.
@@ -75,9 +69,7 @@ TEST(ReferenceBody, IsTheSmallerObjectWhicheverIsCalledA) {
   Pose X;
   X.position = Eigen::Vector3d(0.3, -1.2, 2.5);
   X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized()));
-  Pose Xs;
-  Xs.quaternion = X.quaternion.conjugate();
-  Xs.position = -(Xs.quaternion * X.position);
+  const Pose Xs = X.inverse();
   const Eigen::Vector3d p = X.apply_inverse(r.centre_B(X));  // in the ellipsoid's frame
   EXPECT_LE((p - rs.centre_B(Xs)).norm(), 1e-12 * scene.tol.length_scale);
   // a tie keeps A

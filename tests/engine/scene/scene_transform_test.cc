@@ -102,10 +102,7 @@ TEST(SceneTransform, MovedSceneMovesBAndTheSeeds) {
   for (const FaceSpec& f : t.B.faces) expect_text_matches(f);
 
   // moving back by X^-1 restores B's faces
-  Pose X_inv;
-  X_inv.quaternion = X.quaternion.conjugate();
-  X_inv.position = -(X_inv.quaternion * X.position);
-  const SceneSpec back = moved_scene(t, X_inv);
+  const SceneSpec back = moved_scene(t, X.inverse());
   for (size_t i = 0; i < s.B.faces.size(); ++i)
     for (int n = 0; n < Polynomial::kNumCoeffs; ++n)
       EXPECT_NEAR(back.B.faces[i].g.coeffs()[n], s.B.faces[i].g.coeffs()[n],
