@@ -884,12 +884,7 @@ void Builder::join_duplicate_states() {
           representative(i) == representative(j))
         continue;
       const std::vector<Witness>&mi = members_[i], &mj = members_[j];
-      // Paths in one contact's parameters for a one-contact CF only. With more contacts the
-      // projection has to restore the others after a straight move of the leading one, and
-      // measured in session 30 none of 508 such walks arrived (Examples 1 and 2, the torus):
-      // 96% of their waypoints lost a contact or penetrated, at most of the phase's time.
-      bool joined = si.cf.cardinality() == 1 &&
-                    first_holding(mi.size() * mj.size(), [&](size_t k, MotionCounters& c) {
+      bool joined = first_holding(mi.size() * mj.size(), [&](size_t k, MotionCounters& c) {
                       return joined_by_parameter_path(scene_, mi[k / mj.size()].pose,
                                                       mj[k % mj.size()].pose, si.cf, c, symmetry_);
                     }) >= 0;
