@@ -345,6 +345,7 @@ class Builder {
       : scene_(scene), options_(options), listener_(listener), cancel_(cancel),
         symmetry_(SceneSymmetry::of(scene)) {
     graph_.scene = scene.spec.name;
+    counters_.memo = &memo_;
   }
 
   StateGraph run();
@@ -454,6 +455,7 @@ class Builder {
   const std::atomic<bool>* cancel_;
   SceneSymmetry symmetry_;
   StateGraph graph_;
+  ConnectionMemo memo_;  // the run's CF-compliant motions, for the joins that repeat them
   MotionCounters counters_;
   // Collision queries per Phase so far, and the phase now running with the count at its start.
   std::array<long, kPhases> phase_queries_{};
@@ -529,8 +531,7 @@ int Builder::first_holding(size_t n, Test&& test) {
   for (size_t begin = 0; begin < n; begin += batch) {
     const size_t count = std::min(batch, n - begin);
     std::vector<char> holds(count, 0);
-    std::vector<MotionCounters> counters(count);
-    for (MotionCounters& c : counters) c.measure = counters_.measure;
+    std::vector<MotionCounters> counters(count, counters_.fresh());
     parallel_for(
         count, options_.threads, [&] { return cancelled(); },
         [&](size_t k) { holds[k] = test(begin + k, counters[k]); });
@@ -553,8 +554,7 @@ Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose&
   for (const State& s : graph_.states) {
     if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
     for (size_t m = 0; m < members_[s.id].size(); ++m) {
-      MotionCounters c;
-      c.measure = counters_.measure;
+      MotionCounters c = counters_.fresh();
       const bool joined = joined_within_cf(scene_, members_[s.id][m].pose, pose, cf, c, symmetry_);
       joins[{s.id, static_cast<int>(m)}] = {joined, c};
       if (joined) break;

@@ -254,8 +254,7 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
     for (; next < edges.size() && open.size() < batch; ++next)
       if (root(std::get<1>(edges[next])) != root(std::get<2>(edges[next]))) open.push_back(next);
     std::vector<char> moved(open.size(), 0);
-    std::vector<MotionCounters> tried(open.size());
-    for (MotionCounters& c : tried) c.measure = counters.measure;
+    std::vector<MotionCounters> tried(open.size(), counters.fresh());
     parallel_for(
         open.size(), threads, [] { return false; },
         [&](size_t k) {

@@ -1012,8 +1012,42 @@ std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pos
       });
 }
 
-bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
-                         const ContactFormation& cf, MotionCounters& counters) {
+std::optional<ConnectionMemo::Answer> ConnectionMemo::find(const std::string& key) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = answers_.find(key);
+  if (it == answers_.end()) return std::nullopt;
+  return it->second;
+}
+
+void ConnectionMemo::store(const std::string& key, const Answer& answer) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  answers_.emplace(key, answer);
+}
+
+std::string ConnectionMemo::key(const Pose& from, const Pose& to, const ContactFormation& cf,
+                                bool measure) {
+  std::string key;
+  auto add = [&](const void* data, size_t bytes) {
+    key.append(static_cast<const char*>(data), bytes);
+  };
+  for (const Pose* X : {&from, &to}) {
+    add(X->position.data(), 3 * sizeof(double));
+    add(X->quaternion.coeffs().data(), 4 * sizeof(double));
+  }
+  for (const PtcCount& e : cf.entries()) {
+    const int fields[] = {static_cast<int>(e.a.kind), e.a.index,
+                          static_cast<int>(e.b.kind), e.b.index,
+                          static_cast<int>(e.type),   e.count};
+    add(fields, sizeof fields);
+  }
+  key.push_back(measure ? 1 : 0);
+  return key;
+}
+
+namespace {
+
+bool compute_connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
+                                 const ContactFormation& cf, MotionCounters& counters) {
   ++counters.detections;
   const ContactReport rep = detect_contacts(scene, from);
   if (!(ContactFormation::of(rep.contacts) == cf)) return false;
@@ -1025,6 +1059,23 @@ bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pos
     if (m.travel_to(to, by_contacts)) return true;
   }
   return false;
+}
+
+}  // namespace
+
+bool connected_within_cf(const SceneGeometry& scene, const Pose& from, const Pose& to,
+                         const ContactFormation& cf, MotionCounters& counters) {
+  if (!counters.memo) return compute_connected_within_cf(scene, from, to, cf, counters);
+  const std::string key = ConnectionMemo::key(from, to, cf, counters.measure);
+  std::optional<ConnectionMemo::Answer> answer = counters.memo->find(key);
+  if (!answer) {
+    answer.emplace();
+    answer->counters.measure = counters.measure;
+    answer->connected = compute_connected_within_cf(scene, from, to, cf, answer->counters);
+    counters.memo->store(key, *answer);
+  }
+  counters.merge(answer->counters);
+  return answer->connected;
 }
 
 std::string MotionVariant::name() const {

@@ -53,6 +53,45 @@ TEST(ConnectedWithinCf, KeepsAContactFarFromBsOrigin) {
   EXPECT_EQ(arrived, motions);
 }
 
+// A remembered answer is the computed one: the same verdict and the same counters whether the
+// motion runs without a memo, runs and is stored, or is found; a different pose is not found.
+TEST(ConnectionMemo, AnswersAsTheMotionDoesWithItsCounters) {
+  const SceneGeometry scene = testkit::far_balls_scene();
+  const Eigen::Vector3d& centre = testkit::kFarBallsCentre;
+  const auto touching = [&](double theta, double turn) {
+    const Eigen::Vector3d u(std::sin(theta), 0, std::cos(theta));
+    Pose X;
+    X.position = centre + 5 * u;
+    X.quaternion = Eigen::Quaterniond(Eigen::AngleAxisd(turn, u));
+    return X;
+  };
+  const Pose from = touching(0.4, 0), to = touching(0.6, 0.1);
+  const ContactFormation cf = ContactFormation::of(detect_contacts(scene, from).contacts);
+  ASSERT_EQ(cf.cardinality(), 1);
+  MotionCounters plain;
+  const bool verdict = connected_within_cf(scene, from, to, cf, plain);
+  ASSERT_GT(plain.detections, 1);  // a motion in steps was computed
+  ConnectionMemo memo;
+  MotionCounters first, again;
+  first.memo = again.memo = &memo;
+  EXPECT_FALSE(memo.find(ConnectionMemo::key(from, to, cf, false)));
+  EXPECT_EQ(connected_within_cf(scene, from, to, cf, first), verdict);
+  const auto stored = memo.find(ConnectionMemo::key(from, to, cf, false));
+  ASSERT_TRUE(stored);
+  EXPECT_EQ(stored->connected, verdict);
+  EXPECT_EQ(connected_within_cf(scene, from, to, cf, again), verdict);
+  for (const MotionCounters* c : {&first, &again}) {
+    EXPECT_EQ(c->detections, plain.detections);
+    EXPECT_EQ(c->pair_solves, plain.pair_solves);
+    EXPECT_EQ(c->steps, plain.steps);
+  }
+  // the other direction, and a pose one ulp away, are other questions
+  EXPECT_FALSE(memo.find(ConnectionMemo::key(to, from, cf, false)));
+  Pose nudged = to;
+  nudged.position.x() = std::nextafter(nudged.position.x(), 1e300);
+  EXPECT_FALSE(memo.find(ConnectionMemo::key(from, nudged, cf, false)));
+}
+
 // The twists' reference body is the smaller object, the same physical centre and size
 // whichever object is called A: in Example 1 the ellipsoid (A, half-diagonal 3.08 against the
 // bowl's 6.51), in the swapped scene again the ellipsoid, now B.
