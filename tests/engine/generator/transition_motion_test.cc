@@ -90,6 +90,16 @@ TEST(ConnectionMemo, AnswersAsTheMotionDoesWithItsCounters) {
   Pose nudged = to;
   nudged.position.x() = std::nextafter(nudged.position.x(), 1e300);
   EXPECT_FALSE(memo.find(ConnectionMemo::key(from, nudged, cf, false)));
+  // An answer in the memo is used, not computed again: a planted one comes back as planted.
+  ConnectionMemo::Answer planted;
+  planted.connected = !verdict;
+  planted.counters.detections = 7;
+  memo.store(ConnectionMemo::key(from, nudged, cf, false), planted);
+  MotionCounters found;
+  found.memo = &memo;
+  EXPECT_EQ(connected_within_cf(scene, from, nudged, cf, found), !verdict);
+  EXPECT_EQ(found.detections, 7);
+  EXPECT_EQ(found.steps, 0);
 }
 
 // The twists' reference body is the smaller object, the same physical centre and size
