@@ -65,8 +65,8 @@ struct MotionCounters {
 struct MotionFrame {
   int step = 0;
   Pose pose;
-  std::vector<PointContact> contacts;  // all exact contacts at `pose`
-  std::string phase;                   // "drive", "event", "settle", "collision", "done"
+  std::vector<PointContact> contacts;             // all exact contacts at `pose`
+  std::string phase;                              // "drive", "event", "settle", "collision", "done"
   std::vector<ElementId> collided_a, collided_b;  // at a collision frame
 };
 using MotionObserver = std::function<void(const MotionFrame&)>;
@@ -83,10 +83,10 @@ struct Discovery {
 struct MotionOutcome {
   std::optional<Discovery> discovered;
   bool feasible = false;
-  Pose end;                           // the witness of the target CF when feasible
-  std::vector<PointContact> contacts; // exact contacts at `end`
-  std::string motion;                 // e.g. "slidingA", "slidingB+rotation", "combined"
-  std::string reason;                 // why it failed
+  Pose end;                            // the witness of the target CF when feasible
+  std::vector<PointContact> contacts;  // exact contacts at `end`
+  std::string motion;                  // e.g. "slidingA", "slidingB+rotation", "combined"
+  std::string reason;                  // why it failed
   int steps = 0;
 };
 
@@ -104,15 +104,13 @@ MotionOutcome run_transition_motion(const SceneGeometry& scene, const Pose& star
 // push is blocked, a kept contact changes, or A slides off).
 std::optional<Discovery> probe_for_contact(const SceneGeometry& scene, const Pose& start,
                                            const std::vector<PointContact>& contacts,
-                                           const Eigen::Vector3d& goal_B,
-                                           MotionCounters& counters);
+                                           const Eigen::Vector3d& goal_B, MotionCounters& counters);
 // A tipping probe: from `start`, keeping every contact, A turns about the axis `axis_B`
 // through the point of contact `pivot` (an index into `contacts`), by at most a half turn; the
 // first new contact met gives a state of higher cardinality.
 std::optional<Discovery> probe_by_rotation(const SceneGeometry& scene, const Pose& start,
                                            const std::vector<PointContact>& contacts, int pivot,
-                                           const Eigen::Vector3d& axis_B,
-                                           MotionCounters& counters);
+                                           const Eigen::Vector3d& axis_B, MotionCounters& counters);
 
 // A CF-compliant motion from `from` toward `to` keeping every contact of `cf`: true when it
 // arrives, i.e. both witnesses lie in one CF-connected region (paper Section II-C).
