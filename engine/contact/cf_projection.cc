@@ -98,7 +98,8 @@ ProjectionResult project_onto_cf(const ContactContext& context, const Pose& star
     };
     take(pool);
     if (static_cast<int>(mine.size()) < e.count)
-      take(pair_local_minima(context, start, e.a, e.b, e.type));
+      take(options.minima ? options.minima->get(context, start, e.a, e.b, e.type)
+                          : pair_local_minima(context, start, e.a, e.b, e.type));
     if (static_cast<int>(mine.size()) < e.count) {
       result.reason = "found " + std::to_string(mine.size()) + " of the " +
                       std::to_string(e.count) + " local distance minima of " +

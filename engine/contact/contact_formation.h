@@ -49,6 +49,7 @@ class ContactFormation {
 std::string element_pair_name(const SceneGeometry& scene, ElementId a, ElementId b);
 
 class ContactContext;
+class PairMinimaMemo;
 
 // Moves a pose onto the configurations of `cf`: all its contacts exact (every residual below
 // tol.solve_residual), every other element pair separated. Gauss-Newton with minimum-norm
@@ -60,6 +61,9 @@ struct ProjectionOptions {
   // without one are taken from detection at the start pose, then from sampling the two
   // elements (pair_seeds.h).
   std::vector<PointContact> seeds;
+  // Where set, the sampled local minima come from (and are kept in) this memo (pair_seeds.h):
+  // the same answers, computed once for projections that share a start pose.
+  PairMinimaMemo* minima = nullptr;
 };
 struct ProjectionResult {
   bool ok = false;

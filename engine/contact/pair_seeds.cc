@@ -1,6 +1,7 @@
 #include "engine/contact/pair_seeds.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "engine/contact/contact_classification.h"
 
@@ -70,12 +71,22 @@ std::vector<PointContact> pair_local_minima(const ContactContext& context, const
     for (const Eigen::Vector3d& x : SA)
       for (const Eigen::Vector3d& y : SB) starts.push_back({x, y, (X_BA.apply(x) - y).norm()});
   }
-  std::sort(starts.begin(), starts.end(),
-            [](const Start& s, const Start& t) { return s.estimate < t.estimate; });
+  // By increasing estimate. The sort moves (estimate, index) pairs rather than the 56-byte
+  // starts: std::sort's moves follow from its comparisons alone, which see the same estimates
+  // in the same places, so the order, ties included, is the one sorting the starts gives.
+  struct Ranked {
+    double estimate;
+    int index;
+  };
+  std::vector<Ranked> ranked(starts.size());
+  for (size_t k = 0; k < starts.size(); ++k) ranked[k] = {starts[k].estimate, static_cast<int>(k)};
+  std::sort(ranked.begin(), ranked.end(),
+            [](const Ranked& s, const Ranked& t) { return s.estimate < t.estimate; });
 
   const double separation = scene.tol.seed_separation;
   std::vector<const Start*> chosen;
-  for (const Start& s : starts) {
+  for (const Ranked& r : ranked) {
+    const Start& s = starts[r.index];
     if (static_cast<int>(chosen.size()) >= kStarts) break;
     bool near = false;
     for (const Start* c : chosen)
@@ -98,6 +109,39 @@ std::vector<PointContact> pair_local_minima(const ContactContext& context, const
   std::sort(out.begin(), out.end(),
             [](const PointContact& x, const PointContact& y) { return x.gap < y.gap; });
   return out;
+}
+
+std::vector<PointContact> PairMinimaMemo::get(const ContactContext& context, const Pose& X_BA,
+                                              ElementId a, ElementId b, PtcType type) {
+  Key key{};
+  const double coordinates[7] = {X_BA.position.x(),   X_BA.position.y(),   X_BA.position.z(),
+                                 X_BA.quaternion.w(), X_BA.quaternion.x(), X_BA.quaternion.y(),
+                                 X_BA.quaternion.z()};
+  static_assert(sizeof(coordinates) == 7 * sizeof(std::uint64_t));
+  std::memcpy(key.data(), coordinates, sizeof(coordinates));
+  key[7] = (static_cast<std::uint64_t>(a.kind) << 32) | static_cast<std::uint32_t>(a.index);
+  key[8] = (static_cast<std::uint64_t>(b.kind) << 32) | static_cast<std::uint32_t>(b.index);
+  key[9] = static_cast<std::uint64_t>(type);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = answers_.find(key);
+    if (it != answers_.end()) return it->second;
+  }
+  std::vector<PointContact> minima = pair_local_minima(context, X_BA, a, b, type);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++computed_;
+  answers_.emplace(key, minima);
+  return minima;
+}
+
+size_t PairMinimaMemo::size() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return answers_.size();
+}
+
+size_t PairMinimaMemo::computed() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return computed_;
 }
 
 }  // namespace pcsg

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "engine/contact/convex_support.h"
+#include "engine/contact/pair_seeds.h"
 #include "engine/generator/cf_parameter_path.h"
 #include "engine/generator/hypothesis.h"
 #include "engine/generator/motion_drive.h"
@@ -730,20 +731,39 @@ bool Builder::project_upward() {
   };
   const size_t jobs = targets.size() * turns.size();
   std::vector<std::optional<ProjectionResult>> results(jobs);  // the converged ones
-  parallel_for(
-      jobs, options_.threads, [&] { return cancelled(); },
-      [&](size_t j) {
-        const Target& t = targets[j / turns.size()];
-        const int i = static_cast<int>(j % turns.size());
-        ProjectionResult p = project_onto_cf(
-            scene_, turned_about_A(graph_.states[t.state].pose, turns[i], angle(i)), t.cf);
-        if (p.ok) results[j] = std::move(p);
-      },
-      [&](size_t finished) {
-        if (finished % 64 == 0)
-          report_phase(Phase::Projections, "projections", static_cast<int>(finished),
-                       static_cast<int>(jobs));
-      });
+  // Projection j is turn j % turns of target j / turns. They run a state at a time, one job
+  // per turn projecting that turn toward each of the state's targets in turn: the targets
+  // start from the same turned pose, so they meet its detection in the context's recent
+  // reports and the sampled minima of their shared pairs (the state's own) in the job's memo
+  // (pair_seeds.h; the same answers, computed once: the results do not change).
+  size_t done = 0;  // projections of the states before
+  for (size_t first = 0; first < targets.size() && !cancelled();) {
+    size_t last = first;
+    while (last < targets.size() && targets[last].state == targets[first].state) ++last;
+    const size_t n_targets = last - first;
+    parallel_for(
+        turns.size(), options_.threads, [&] { return cancelled(); },
+        [&](size_t i) {
+          PairMinimaMemo minima;
+          ProjectionOptions options;
+          options.minima = &minima;
+          const Pose start =
+              turned_about_A(graph_.states[targets[first].state].pose, turns[i], angle(i));
+          for (size_t t = first; t < last; ++t) {
+            ProjectionResult p = project_onto_cf(scene_, start, targets[t].cf, options);
+            if (p.ok) results[t * turns.size() + i] = std::move(p);
+          }
+        },
+        [&](size_t finished) {
+          // about every 64 projections, as before they ran by turns
+          const size_t now = done + finished * n_targets;
+          if (now / 64 != (now - n_targets) / 64)
+            report_phase(Phase::Projections, "projections", static_cast<int>(now),
+                         static_cast<int>(jobs));
+        });
+    done += n_targets * turns.size();
+    first = last;
+  }
   if (cancelled()) return false;
   counters_.detections += static_cast<long>(jobs);  // one per projection, as elsewhere
   // In job order (whatever the thread count): the first witness of each target CF and region

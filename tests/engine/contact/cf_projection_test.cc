@@ -3,10 +3,13 @@
 // reasons given when it cannot succeed.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <thread>
 
 #include "engine/contact/contact_context.h"
 #include "engine/contact/contact_formation.h"
+#include "engine/contact/pair_seeds.h"
 #include "tests/engine/contact/test_shapes.h"
 
 namespace pcsg {
@@ -110,6 +113,71 @@ TEST(CfProjection, DetectionIsThreadSafeOnASharedContext) {
   tb.join();
   EXPECT_EQ(a, serial);
   EXPECT_EQ(b, serial);
+}
+
+bool same_bits(const Pose& a, const Pose& b) {
+  return std::memcmp(a.position.data(), b.position.data(), 3 * sizeof(double)) == 0 &&
+         std::memcmp(a.quaternion.coeffs().data(), b.quaternion.coeffs().data(),
+                     4 * sizeof(double)) == 0;
+}
+
+bool same_minima(const std::vector<PointContact>& a, const std::vector<PointContact>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t k = 0; k < a.size(); ++k)
+    if (a[k].p_A != b[k].p_A || a[k].p_B != b[k].p_B || a[k].gap != b[k].gap) return false;
+  return true;
+}
+
+// PairMinimaMemo (pair_seeds.h) gives pair_local_minima's answer, keyed by the exact pose and
+// pair: the same pose again is found (not sampled again), a pose one ulp away or another pair
+// is not.
+TEST(PairMinimaMemo, AnswersAsTheSamplingDoesForTheExactInputs) {
+  const SceneGeometry scene =
+      testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid());
+  ContactContext ctx(scene);
+  const ContactFormation cf = ContactFormation::parse("{(fA-f1, 2)}", scene);
+  const PtcCount& e = cf.entries().front();
+  const Pose X = pose({0.05, -0.03, 1.3}, turn(M_PI / 2, Eigen::Vector3d::UnitY()));
+  const std::vector<PointContact> want = pair_local_minima(ctx, X, e.a, e.b, e.type);
+  ASSERT_EQ(want.size(), 2u);  // the ellipsoid above the dish: two distance minima
+  PairMinimaMemo memo;
+  EXPECT_TRUE(same_minima(memo.get(ctx, X, e.a, e.b, e.type), want));
+  EXPECT_EQ(memo.size(), 1u);
+  EXPECT_TRUE(same_minima(memo.get(ctx, X, e.a, e.b, e.type), want));
+  EXPECT_EQ(memo.size(), 1u);
+  EXPECT_EQ(memo.computed(), 1u);  // found, not sampled again
+  Pose Y = X;
+  Y.position.z() = std::nextafter(X.position.z(), 2.0);
+  EXPECT_TRUE(
+      same_minima(memo.get(ctx, Y, e.a, e.b, e.type), pair_local_minima(ctx, Y, e.a, e.b, e.type)));
+  EXPECT_EQ(memo.size(), 2u);
+  EXPECT_EQ(memo.computed(), 2u);
+  const ElementId rim{ElementKind::Edge, 0};
+  memo.get(ctx, X, e.a, rim, PtcType::FE);
+  EXPECT_EQ(memo.size(), 3u);
+}
+
+// A projection that takes its starts from the memo ends at the same pose, bit for bit, as one
+// that samples them itself; a second projection from the same pose finds them there.
+TEST(CfProjection, WithAMinimaMemoEndsWhereItWouldWithout) {
+  const SceneGeometry scene =
+      testkit::scene_of(testkit::ellipsoid_solid(1, 1.5, 2.5, "fA"), testkit::bowl_solid());
+  ContactContext ctx(scene);
+  const ContactFormation cf = ContactFormation::parse("{(fA-f1, 2)}", scene);
+  // Above the dish by more than detection's band: the starts come from sampling.
+  const Pose start = pose({0.05, -0.03, 1.3}, turn(M_PI / 2, Eigen::Vector3d::UnitY()));
+  const ProjectionResult plain = project_onto_cf(ctx, start, cf);
+  ASSERT_TRUE(plain.ok) << plain.reason;
+  PairMinimaMemo memo;
+  ProjectionOptions options;
+  options.minima = &memo;
+  for (int k = 0; k < 2; ++k) {
+    const ProjectionResult memoised = project_onto_cf(ctx, start, cf, options);
+    ASSERT_TRUE(memoised.ok) << memoised.reason;
+    EXPECT_TRUE(same_bits(memoised.pose, plain.pose)) << k;
+    EXPECT_EQ(memo.size(), 1u) << k;
+    EXPECT_EQ(memo.computed(), 1u) << k;
+  }
 }
 
 }  // namespace
