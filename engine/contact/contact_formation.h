@@ -71,14 +71,12 @@ struct ProjectionResult {
   std::vector<PointContact> contacts;  // the cf's contacts at `pose` (as detected)
   double max_residual = 0;
   int iterations = 0;
-  std::string reason;                  // why it failed, naming elements and values
+  std::string reason;  // why it failed, naming elements and values
 };
 ProjectionResult project_onto_cf(const ContactContext& context, const Pose& start,
-                                 const ContactFormation& cf,
-                                 const ProjectionOptions& options = {});
+                                 const ContactFormation& cf, const ProjectionOptions& options = {});
 // The same with the scene's cached context (contact_context.h).
 ProjectionResult project_onto_cf(const SceneGeometry& scene, const Pose& start,
-                                 const ContactFormation& cf,
-                                 const ProjectionOptions& options = {});
+                                 const ContactFormation& cf, const ProjectionOptions& options = {});
 
 }  // namespace pcsg
