@@ -1,7 +1,6 @@
 #include "engine/contact/pair_seeds.h"
 
 #include <algorithm>
-#include <cstring>
 
 #include "engine/contact/contact_classification.h"
 
@@ -114,11 +113,8 @@ std::vector<PointContact> pair_local_minima(const ContactContext& context, const
 std::vector<PointContact> PairMinimaMemo::get(const ContactContext& context, const Pose& X_BA,
                                               ElementId a, ElementId b, PtcType type) {
   Key key{};
-  const double coordinates[7] = {X_BA.position.x(),   X_BA.position.y(),   X_BA.position.z(),
-                                 X_BA.quaternion.w(), X_BA.quaternion.x(), X_BA.quaternion.y(),
-                                 X_BA.quaternion.z()};
-  static_assert(sizeof(coordinates) == 7 * sizeof(std::uint64_t));
-  std::memcpy(key.data(), coordinates, sizeof(coordinates));
+  const std::array<std::uint64_t, 7> pose = pose_bits(X_BA);
+  std::copy(pose.begin(), pose.end(), key.begin());
   key[7] = (static_cast<std::uint64_t>(a.kind) << 32) | static_cast<std::uint32_t>(a.index);
   key[8] = (static_cast<std::uint64_t>(b.kind) << 32) | static_cast<std::uint32_t>(b.index);
   key[9] = static_cast<std::uint64_t>(type);

@@ -1,16 +1,15 @@
 #include "engine/contact/report_cache.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace pcsg {
 
 ReportCache::Key ReportCache::key(const Pose& X_BA, double near_margin) {
-  const double values[8] = {X_BA.position.x(),   X_BA.position.y(),   X_BA.position.z(),
-                            X_BA.quaternion.w(), X_BA.quaternion.x(), X_BA.quaternion.y(),
-                            X_BA.quaternion.z(), near_margin};
   Key k;
-  static_assert(sizeof values == sizeof k, "eight 64-bit words");
-  std::memcpy(k.data(), values, sizeof k);
+  const std::array<std::uint64_t, 7> pose = pose_bits(X_BA);
+  std::copy(pose.begin(), pose.end(), k.begin());
+  std::memcpy(&k[7], &near_margin, sizeof near_margin);
   return k;
 }
 

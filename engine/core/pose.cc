@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -40,6 +41,16 @@ std::string Pose::str() const {
                 position.y(), position.z(), quaternion.w(), quaternion.x(), quaternion.y(),
                 quaternion.z());
   return buf;
+}
+
+std::array<std::uint64_t, 7> pose_bits(const Pose& X) {
+  const double coordinates[7] = {X.position.x(),   X.position.y(),   X.position.z(),
+                                 X.quaternion.w(), X.quaternion.x(), X.quaternion.y(),
+                                 X.quaternion.z()};
+  std::array<std::uint64_t, 7> bits;
+  static_assert(sizeof coordinates == sizeof bits, "seven 64-bit words");
+  std::memcpy(bits.data(), coordinates, sizeof bits);
+  return bits;
 }
 
 Pose between(const Pose& a, const Pose& b, double f) {

@@ -3,6 +3,8 @@
 // Convention for the whole project: a pose X_BA maps A's frame into B's frame,
 //   p_B = R(q) p_A + position.
 #include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
 #include <string>
 
 namespace pcsg {
@@ -33,6 +35,10 @@ struct Pose {
   // "x y z qw qx qy qz" with full precision.
   std::string str() const;
 };
+
+// The bits of the seven coordinates (position x y z, quaternion w x y z): the key of the
+// memos that answer only the very same pose (one a unit in the last place away is another).
+std::array<std::uint64_t, 7> pose_bits(const Pose& X);
 
 // The pose a fraction `f` of the way from a to b: positions interpolated, orientations
 // slerped along the shorter arc.

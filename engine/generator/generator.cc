@@ -394,6 +394,24 @@ class Builder {
   void retry_from_other_witnesses();
   // Tells the listener how far a phase after the BFS levels has come: `done` of `total` units.
   void report_phase(Phase p, const char* unit, int done, int total);
+  // A walk over the states [0, n) in order reports its progress through upto(i): each state
+  // up to i not yet reported (the walks over ordered_pipeline's commits reach them in order).
+  struct StateWalk {
+    Builder& builder;
+    Phase phase;
+    int n;
+    int reported = -1;
+    void upto(int i) {
+      for (; reported < i; ++reported) builder.report_phase(phase, "states", reported + 1, n);
+    }
+  };
+  // ordered_pipeline over n jobs on this run's threads, until cancelled.
+  template <typename Skip, typename Job, typename Commit>
+  void in_order(size_t n, Skip&& skip, Job&& job, Commit&& commit) {
+    ordered_pipeline(
+        n, options_.threads, jobs_ahead(options_.threads), [&] { return cancelled(); }, skip, job,
+        commit);
+  }
   // The motions retry_from_other_witnesses would try as the graph stands, run on the worker
   // threads; keyed by (state, witness, CF). Empty with one thread.
   std::map<std::tuple<int, int, ContactFormation>, TryResult> try_retries_ahead();
@@ -436,6 +454,13 @@ class Builder {
   // edge of its region can miss a state above it that lies elsewhere along the region). Each
   // new state seeds its own LN graph. Returns whether any state was added.
   bool project_upward();
+  // Whether state id's region has a link to a state of CF `cf` (a later union or link makes
+  // it so; nothing makes it not so).
+  bool linked_to_cf(int id, const ContactFormation& cf) {
+    return std::any_of(graph_.links.begin(), graph_.links.end(), [&](const Link& l) {
+      return representative(l.from) == representative(id) && graph_.states[l.to].cf == cf;
+    });
+  }
   // True when some state of the graph has this CF (in any region).
   bool holds_cf(const ContactFormation& cf) const {
     return std::any_of(graph_.states.begin(), graph_.states.end(),
@@ -444,8 +469,9 @@ class Builder {
   std::set<int> projected_upward_;
   // The first i in [0, n) for which test(i, counters) holds, or -1 (test: a join, a pure
   // function of its inputs): the answer, and the counters merged into counters_, of testing
-  // them one by one in order, with up to options_.threads tests running at once. The tests
-  // of a batch after the first that holds are dropped with their counters, so neither
+  // them one by one in order, with up to options_.threads tests running at once, at most
+  // kJobsAheadPerThread per thread ahead of the first not yet decided (ordered_pipeline).
+  // The tests after the first that holds are dropped with their counters, so neither
   // depends on the thread count.
   template <typename Test>
   int first_holding(size_t n, Test&& test);
@@ -492,7 +518,9 @@ class Builder {
   // A witness of state `id` the fraction `f` of the way toward state `toward`'s witness: the
   // pose there (the target turned by the solids' symmetries to the nearest equivalent)
   // projected onto the state's CF, and joined to the state's witness by CF-compliant motions.
-  std::optional<Witness> waypoint(int id, int toward, double f);
+  // Reads only what that phase does not change (the states, their first witnesses and
+  // signatures), and counts into `counters`: it runs on the worker threads.
+  std::optional<Witness> waypoint(int id, int toward, double f, MotionCounters& counters) const;
 
   // Per state: the witnesses shown to lie in its region (its own first, then those of later
   // motions that ended there), a roadmap that later witnesses may join at any of its points;
@@ -528,20 +556,18 @@ int Builder::representative(int id) {
 
 template <typename Test>
 int Builder::first_holding(size_t n, Test&& test) {
-  const size_t batch = static_cast<size_t>(std::max(1, options_.threads));
-  for (size_t begin = 0; begin < n; begin += batch) {
-    const size_t count = std::min(batch, n - begin);
-    std::vector<char> holds(count, 0);
-    std::vector<MotionCounters> counters(count, counters_.fresh());
-    parallel_for(
-        count, options_.threads, [&] { return cancelled(); },
-        [&](size_t k) { holds[k] = test(begin + k, counters[k]); });
-    for (size_t k = 0; k < count; ++k) {
-      counters_.merge(counters[k]);
-      if (holds[k]) return static_cast<int>(begin + k);
-    }
-  }
-  return -1;
+  std::vector<char> holds(n, 0);
+  std::vector<MotionCounters> counters(n, counters_.fresh());
+  int found = -1;
+  in_order(
+      n, [](size_t) { return false; }, [&](size_t k) { holds[k] = test(k, counters[k]); },
+      [&](size_t k) {
+        counters_.merge(counters[k]);
+        if (!holds[k]) return true;
+        found = static_cast<int>(k);
+        return false;
+      });
+  return found;
 }
 
 Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose& pose,
@@ -566,11 +592,55 @@ Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose&
 
 std::vector<Builder::JoinsAhead> Builder::joins_ahead_of(
     const std::vector<const Discovery*>& found) {
+  // joins_ahead of each, its joins in one list for the worker threads. Each (discovery,
+  // state) group tries the state's witnesses in order until one joins, and the groups do not
+  // depend on each other, so the list takes every group's first witness, then every group's
+  // second, and so on: the threads run other groups' joins before any join that an earlier
+  // one of its group may make useless.
+  struct Join {
+    size_t found, group;  // group: the (discovery, state) whose witnesses are tried in order
+    int state, member;
+    bool joined = false;
+    MotionCounters counters;
+  };
+  std::vector<std::vector<Join>> by_group;
+  size_t joins_listed = 0;
+  for (size_t k = 0; k < found.size(); ++k) {
+    if (!found[k]) continue;
+    const Discovery& d = *found[k];
+    const RegionSignature sig = region_signature(d.contacts);
+    bool held = false;
+    for (const State& s : graph_.states)
+      if (s.cf == d.cf && signatures_[s.id] == sig)
+        for (const Witness& m : members_[s.id]) held = held || same_pose(m.pose, d.pose);
+    if (held) continue;  // find_state tries no join
+    for (const State& s : graph_.states) {
+      if (!(s.cf == d.cf) || signatures_[s.id] != sig) continue;
+      by_group.emplace_back();
+      for (size_t m = 0; m < members_[s.id].size(); ++m)
+        by_group.back().push_back(
+            {k, by_group.size() - 1, s.id, static_cast<int>(m), false, counters_.fresh()});
+      joins_listed += by_group.back().size();
+    }
+  }
+  std::vector<Join> list;
+  for (size_t m = 0; list.size() < joins_listed; ++m)
+    for (const std::vector<Join>& g : by_group)
+      if (m < g.size()) list.push_back(g[m]);
+  std::vector<char> joined(by_group.size(), 0);
   std::vector<JoinsAhead> joins(found.size());
-  parallel_for(
-      found.size(), options_.threads, [&] { return cancelled(); },
-      [&](size_t k) {
-        if (found[k]) joins[k] = joins_ahead(found[k]->cf, found[k]->pose, found[k]->contacts);
+  in_order(
+      list.size(), [&](size_t i) { return joined[list[i].group] != 0; },
+      [&](size_t i) {
+        Join& j = list[i];
+        j.joined = joined_within_cf(scene_, members_[j.state][j.member].pose, found[j.found]->pose,
+                                    found[j.found]->cf, j.counters, symmetry_);
+      },
+      [&](size_t i) {
+        const Join& j = list[i];
+        joins[j.found][{j.state, j.member}] = {j.joined, j.counters};
+        joined[j.group] = j.joined;
+        return true;
       });
   return joins;
 }
@@ -896,28 +966,71 @@ void Builder::grow(int seed_id) {
 void Builder::join_duplicate_states() {
   PhaseScope phase(*this, Phase::Identity);
   const int n = static_cast<int>(graph_.states.size());
-  for (int i = 0; i < n && !cancelled(); ++i) {
-    report_phase(Phase::Identity, "states", i, n);
+  // The walk: each pair of states of one CF and region signature, unless already one state
+  // (decided when the walk reaches the pair), is tried by parameter paths between each of the
+  // first's witnesses and each of the second's, in order, until one joins them; then through
+  // a roadmap between their first witnesses. Each attempt is a pure function of the states'
+  // witnesses (this phase adds none), so all of them run ahead on the worker threads
+  // (ordered_pipeline), and the walk uses a result where it would have made the attempt, the
+  // others dropped with their counters: neither depends on the thread count.
+  struct Pair {
+    int i, j;
+    bool done = false;
+  };
+  struct Attempt {
+    size_t pair;
+    int path;  // witness pair i-th * (j's witnesses) + j-th, or -1: the roadmap
+    MotionCounters counters;
+    bool joined = false;
+  };
+  std::vector<Pair> pairs;
+  std::vector<Attempt> attempts;
+  for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      const State &si = graph_.states[i], &sj = graph_.states[j];
-      if (!(si.cf == sj.cf) || signatures_[i] != signatures_[j] ||
-          representative(i) == representative(j))
+      if (!(graph_.states[i].cf == graph_.states[j].cf) || signatures_[i] != signatures_[j])
         continue;
-      const std::vector<Witness>&mi = members_[i], &mj = members_[j];
-      bool joined = first_holding(mi.size() * mj.size(), [&](size_t k, MotionCounters& c) {
-                      return joined_by_parameter_path(scene_, mi[k / mj.size()].pose,
-                                                      mj[k % mj.size()].pose, si.cf, c, symmetry_);
-                    }) >= 0;
-      // Then through a roadmap of the region between the two states' own witnesses (joined
-      // the duplicates of Example 1 swapped and of the needle that every path above missed).
-      if (!joined)
-        joined = joined_by_roadmap(scene_, members_[i][0].pose, members_[j][0].pose, si.cf,
-                                   signatures_[i], counters_, nullptr, options_.threads);
-      if (!joined) continue;
-      const int r1 = representative(i), r2 = representative(j);
-      united_[std::max(r1, r2)] = std::min(r1, r2);
+      const size_t paths = members_[i].size() * members_[j].size();
+      for (size_t k = 0; k < paths; ++k)
+        attempts.push_back({pairs.size(), static_cast<int>(k), counters_.fresh()});
+      attempts.push_back({pairs.size(), -1, counters_.fresh()});
+      pairs.push_back({i, j});
     }
-  }
+  StateWalk walk{*this, Phase::Identity, n};
+  in_order(
+      attempts.size(),
+      [&](size_t k) {
+        // joined through others since: one state
+        Pair& p = pairs[attempts[k].pair];
+        if (!p.done && representative(p.i) == representative(p.j)) p.done = true;
+        return p.done;
+      },
+      [&](size_t k) {
+        Attempt& a = attempts[k];
+        const Pair& p = pairs[a.pair];
+        const std::vector<Witness>&mi = members_[p.i], &mj = members_[p.j];
+        const ContactFormation& cf = graph_.states[p.i].cf;
+        // Then through a roadmap of the region between the two states' own witnesses (joined
+        // the duplicates of Example 1 swapped and of the needle that every path above missed).
+        a.joined =
+            a.path >= 0
+                ? joined_by_parameter_path(scene_, mi[a.path / mj.size()].pose,
+                                           mj[a.path % mj.size()].pose, cf, a.counters, symmetry_)
+                : joined_by_roadmap(scene_, mi[0].pose, mj[0].pose, cf, signatures_[p.i],
+                                    a.counters, nullptr, options_.threads);
+      },
+      [&](size_t k) {
+        const Attempt& a = attempts[k];
+        Pair& p = pairs[a.pair];
+        walk.upto(p.i);
+        if (p.done) return true;  // (skip checked for a union just before)
+        counters_.merge(a.counters);
+        if (!a.joined) return true;
+        p.done = true;
+        const int r1 = representative(p.i), r2 = representative(p.j);
+        united_[std::max(r1, r2)] = std::min(r1, r2);
+        return true;
+      });
+  if (!cancelled()) walk.upto(n - 1);
 }
 
 std::optional<Discovery> Builder::image_at(int id, const Pose& Y) {
@@ -1183,7 +1296,8 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
   return out;
 }
 
-std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) {
+std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f,
+                                                  MotionCounters& counters) const {
   const State& s = graph_.states[id];
   const Pose& to = graph_.states[toward].pose;
   // The target as near the state's witness as the solids' symmetries allow: their half turns
@@ -1195,79 +1309,135 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f) 
     const double angle = a.quaternion.angularDistance(s.pose.quaternion);
     if (angle < best) best = angle, target = a;
   }
-  ++counters_.detections;
+  ++counters.detections;
   const ProjectionResult proj = project_onto_cf(scene_, between(s.pose, target, f), s.cf);
   if (!proj.ok) return std::nullopt;
-  ++counters_.detections;
+  ++counters.detections;
   const ContactReport rep = detect_contacts(scene_, proj.pose);
   if (rep.penetrating() || !(ContactFormation::of(rep.contacts) == s.cf) ||
       region_signature(rep.contacts) != signatures_[id])
     return std::nullopt;
   // a witness of this very state only when a CF-compliant motion joins them
-  if (!joined_within_cf(scene_, s.pose, proj.pose, s.cf, counters_, symmetry_)) return std::nullopt;
+  if (!joined_within_cf(scene_, s.pose, proj.pose, s.cf, counters, symmetry_)) return std::nullopt;
   return Witness{proj.pose, rep.contacts};
 }
 
 void Builder::retry_missing_links() {
   PhaseScope phase(*this, Phase::MissingLinks);
   const int n = static_cast<int>(graph_.states.size());
-  for (int id = 0; id < n && !cancelled(); ++id) {
-    report_phase(Phase::MissingLinks, "states", id, n);
+  // The walk: for each state and each of its hypotheses toward a CF the graph has but the
+  // state has no link to (decided when the walk reaches it), attempts in order until one
+  // links: the hypothesis from each of the state's other witnesses, then from waypoints
+  // halfway and three quarters of the way toward each state of that CF. The attempts'
+  // motions (and waypoints) are pure functions of what this phase does not change, so they
+  // run ahead on the worker threads (ordered_pipeline); the walk uses each result where it
+  // would have made the attempt, and drops the others with their counters: the graph and the
+  // counters do not depend on the thread count.
+  struct Group {
+    int id;
+    ContactFormation cf;
+    std::vector<int> targets;  // the states of that CF
+    size_t members;            // the state's witnesses listed when the attempts were
+    bool done = false;
+  };
+  struct Attempt {
+    size_t group;
+    int member = -1;  // the state's witness it starts from, or -1: a waypoint
+    int target = -1;  // the waypoint's: toward this state,
+    double f = 0;     // this fraction of the way
+    MotionCounters counters;
+    std::optional<Witness> from;
+    std::optional<TryResult> tried;  // none when the start has no hypothesis toward the CF
+  };
+  std::vector<Group> groups;
+  std::vector<Attempt> attempts;
+  for (int id = 0; id < n; ++id)
     for (const Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts)) {
-      std::vector<int> targets;
+      Group g{id, h.cf, {}, members_[id].size()};
       for (const State& t : graph_.states)
-        if (t.cf == h.cf) targets.push_back(t.id);
-      const bool linked = std::any_of(graph_.links.begin(), graph_.links.end(), [&](const Link& l) {
-        return representative(l.from) == representative(id) && graph_.states[l.to].cf == h.cf;
-      });
-      if (targets.empty() || linked) continue;
-      // From `from` (a pose of state id's region), the hypothesis toward h.cf; a link when it
-      // arrives in a state the graph has.
-      auto try_from = [&](const State& from) {
-        // the plans index the start's own contacts
-        for (const Hypothesis& hw : hypothesise_ln(scene_, from.contacts)) {
-          if (!(hw.cf == h.cf)) continue;
-          TryResult r = try_hypothesis(scene_, from, hw, options_.measure_discretisation);
-          counters_.merge(r.counters);
-          bool found = false;
-          for (Reached& t : r.targets) {
-            if (!t.candidate.feasible) continue;
-            const int to = find_state(h.cf, t.outcome.end, t.outcome.contacts);
-            if (to < 0) continue;
-            t.candidate.to = to;
-            t.candidate.start = from.pose;
-            graph_.candidates.push_back(t.candidate);
-            if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
-            add_link(id, to, t.candidate.motion);
-            found = true;
-          }
-          return found;
-        }
-        return false;
-      };
-      // First from the state's other witnesses (a state met from several sides keeps them:
-      // the needle in the dish reaches {(fA-e1, 1)} from across the rim first, and from there
-      // slides onto the dish wall only from the witness leaning on the rim inside).
-      bool found = false;
-      for (size_t k = 1; k < members_[id].size() && !found; ++k) {
-        State from = graph_.states[id];
-        from.pose = members_[id][k].pose;
-        from.contacts = members_[id][k].contacts;
-        found = try_from(from);
-      }
-      // Then halfway, and three quarters of the way, toward each state of the CF.
-      for (size_t i = 0; i < targets.size() && !found; ++i) {
-        for (double f : {0.5, 0.75}) {
-          const std::optional<Witness> w = waypoint(id, targets[i], f);
-          if (!w) continue;
-          State from = graph_.states[id];
-          from.pose = w->pose;
-          from.contacts = w->contacts;
-          if ((found = try_from(from))) break;
-        }
-      }
+        if (t.cf == h.cf) g.targets.push_back(t.id);
+      if (g.targets.empty() || linked_to_cf(id, h.cf)) continue;  // links are never removed
+      for (size_t k = 1; k < g.members; ++k)  // (a copy: the walk may add witnesses meanwhile)
+        attempts.push_back(
+            {groups.size(), static_cast<int>(k), -1, 0, counters_.fresh(), members_[id][k], {}});
+      for (int t : g.targets)
+        for (double f : {0.5, 0.75})
+          attempts.push_back({groups.size(), -1, t, f, counters_.fresh(), {}, {}});
+      groups.push_back(std::move(g));
     }
-  }
+  // From `from` (a pose of the group's state's region), the first hypothesis toward its CF.
+  auto try_from = [&](const Group& g, const Witness& from, MotionCounters& counters) {
+    State start = graph_.states[g.id];
+    start.pose = from.pose;
+    start.contacts = from.contacts;
+    // the plans index the start's own contacts
+    for (const Hypothesis& hw : hypothesise_ln(scene_, start.contacts)) {
+      if (!(hw.cf == g.cf)) continue;
+      TryResult r = try_hypothesis(scene_, start, hw, options_.measure_discretisation);
+      counters.merge(r.counters);
+      r.counters = counters.fresh();
+      return std::optional<TryResult>(std::move(r));
+    }
+    return std::optional<TryResult>();
+  };
+  // The walk's use of an attempt's motion: a link when it arrives in a state the graph has.
+  auto links_from = [&](const Group& g, const Witness& from, TryResult& r) {
+    bool found = false;
+    for (Reached& t : r.targets) {
+      if (!t.candidate.feasible) continue;
+      const int to = find_state(g.cf, t.outcome.end, t.outcome.contacts);
+      if (to < 0) continue;
+      t.candidate.to = to;
+      t.candidate.start = from.pose;
+      graph_.candidates.push_back(t.candidate);
+      if (listener_) listener_->on_candidate(graph_, graph_.candidates.back());
+      add_link(g.id, to, t.candidate.motion);
+      found = true;
+    }
+    return found;
+  };
+  StateWalk walk{*this, Phase::MissingLinks, n};
+  in_order(
+      attempts.size(),
+      [&](size_t j) {
+        // A link added since the attempts were listed (from an earlier state of one region)
+        // settles the group: it stays linked.
+        Group& g = groups[attempts[j].group];
+        if (!g.done && linked_to_cf(g.id, g.cf)) g.done = true;
+        return g.done;
+      },
+      [&](size_t j) {
+        Attempt& a = attempts[j];
+        const Group& g = groups[a.group];
+        if (a.member < 0) {
+          a.from = waypoint(g.id, a.target, a.f, a.counters);
+          if (!a.from) return;
+        }
+        a.tried = try_from(g, *a.from, a.counters);
+      },
+      [&](size_t j) {
+        Attempt& a = attempts[j];
+        Group& g = groups[a.group];
+        walk.upto(g.id);
+        if (g.done) return true;  // (skip checked for a link just before)
+        if (a.member < 0 && g.members < members_[g.id].size()) {
+          // Witnesses the walk added to the state since the attempts were listed come before
+          // the waypoints: tried here, in order.
+          for (size_t k = g.members; k < members_[g.id].size() && !g.done; ++k) {
+            const Witness from = members_[g.id][k];
+            MotionCounters c = counters_.fresh();
+            std::optional<TryResult> r = try_from(g, from, c);
+            counters_.merge(c);
+            g.done = r && links_from(g, from, *r);
+          }
+          g.members = members_[g.id].size();
+          if (g.done) return true;
+        }
+        counters_.merge(a.counters);
+        g.done = a.from && a.tried && links_from(g, *a.from, *a.tried);
+        return true;
+      });
+  if (!cancelled()) walk.upto(n - 1);
 }
 
 RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& contacts,

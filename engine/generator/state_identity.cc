@@ -244,32 +244,28 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  // The edges in order, each tried unless its ends are joined already; `threads` of those
-  // still open run at once, and a result is used (its counters merged) only where the order
-  // would have tried it, so neither the answer nor the counters depend on the thread count.
+  // The edges in order, each tried unless its ends are joined already; up to `threads` of
+  // those still open run at once (ordered_pipeline), and a result is used (its counters
+  // merged) only where the order would have tried it, so neither the answer nor the counters
+  // depend on the thread count.
   int motions = 0;
-  const size_t batch = static_cast<size_t>(std::max(1, threads));
-  for (size_t next = 0; next < edges.size() && root(0) != root(1);) {
-    std::vector<size_t> open;
-    for (; next < edges.size() && open.size() < batch; ++next)
-      if (root(std::get<1>(edges[next])) != root(std::get<2>(edges[next]))) open.push_back(next);
-    std::vector<char> moved(open.size(), 0);
-    std::vector<MotionCounters> tried(open.size(), counters.fresh());
-    parallel_for(
-        open.size(), threads, [] { return false; },
-        [&](size_t k) {
-          const auto& [d, i, j] = edges[open[k]];
-          moved[k] = moved_either_way(scene, nodes[i], nodes[j], cf, tried[k]);
-        });
-    for (size_t k = 0; k < open.size(); ++k) {
-      const auto& [d, i, j] = edges[open[k]];
-      if (root(0) == root(1)) break;
-      if (root(i) == root(j)) continue;
-      ++motions;
-      counters.merge(tried[k]);
-      if (moved[k]) parent[root(i)] = root(j);
-    }
-  }
+  std::vector<char> moved(edges.size(), 0);
+  std::vector<MotionCounters> tried(edges.size(), counters.fresh());
+  ordered_pipeline(
+      edges.size(), threads, jobs_ahead(threads), [] { return false; },
+      [&](size_t e) { return root(std::get<1>(edges[e])) == root(std::get<2>(edges[e])); },
+      [&](size_t e) {
+        const auto& [d, i, j] = edges[e];
+        moved[e] = moved_either_way(scene, nodes[i], nodes[j], cf, tried[e]);
+      },
+      [&](size_t e) {
+        const auto& [d, i, j] = edges[e];
+        if (root(i) == root(j)) return true;  // joined by an edge before it: not tried
+        ++motions;
+        counters.merge(tried[e]);
+        if (moved[e]) parent[root(i)] = root(j);
+        return root(0) != root(1);
+      });
   if (stats) *stats = {n, motions};
   return root(0) == root(1);
 }

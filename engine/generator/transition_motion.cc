@@ -1031,8 +1031,8 @@ std::string ConnectionMemo::key(const Pose& from, const Pose& to, const ContactF
     key.append(static_cast<const char*>(data), bytes);
   };
   for (const Pose* X : {&from, &to}) {
-    add(X->position.data(), 3 * sizeof(double));
-    add(X->quaternion.coeffs().data(), 4 * sizeof(double));
+    const std::array<std::uint64_t, 7> bits = pose_bits(*X);
+    add(bits.data(), sizeof bits);
   }
   for (const PtcCount& e : cf.entries()) {
     const int fields[] = {static_cast<int>(e.a.kind), e.a.index,

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstring>
+
 #include "engine/core/error.h"
 
 namespace pcsg {
@@ -36,6 +40,29 @@ TEST(Pose, InverseUndoesThePose) {
   EXPECT_TRUE(X.apply(Xi.apply(p)).isApprox(p, 1e-14));
   EXPECT_TRUE(Xi.apply(Eigen::Vector3d::Zero()).isApprox(X.apply_inverse(Eigen::Vector3d::Zero())));
   EXPECT_TRUE(Xi.inverse().position.isApprox(X.position, 1e-14));
+}
+
+// pose_bits tells poses apart by every bit of every coordinate, in the order x y z, w x y z:
+// equal poses give equal keys, one a unit in the last place away (in any coordinate) another,
+// and +0 and -0 (equal as numbers) two.
+TEST(Pose, BitsTellEveryCoordinateApart) {
+  const Pose X = parse_pose("0.1 -2 3e5, 0.5 0.5 -0.5 0.5");
+  EXPECT_EQ(pose_bits(X), pose_bits(parse_pose("0.1 -2 3e5, 0.5 0.5 -0.5 0.5")));
+  const std::array<double, 7> c = {0.1, -2, 3e5, 0.5, 0.5, -0.5, 0.5};
+  for (int i = 0; i < 7; ++i) {
+    double bits_of_c;
+    std::memcpy(&bits_of_c, &pose_bits(X)[i], sizeof bits_of_c);
+    EXPECT_EQ(bits_of_c, c[i]) << "coordinate " << i;
+    std::array<double, 7> d = c;
+    d[i] = std::nextafter(d[i], 1e300);
+    Pose Y;
+    Y.position = Eigen::Vector3d(d[0], d[1], d[2]);
+    Y.quaternion = Eigen::Quaterniond(d[3], d[4], d[5], d[6]);
+    EXPECT_NE(pose_bits(Y), pose_bits(X)) << "coordinate " << i;
+  }
+  Pose zero, negative_zero;
+  negative_zero.position.x() = -0.0;
+  EXPECT_NE(pose_bits(zero), pose_bits(negative_zero));
 }
 
 }  // namespace
