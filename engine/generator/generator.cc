@@ -1022,8 +1022,7 @@ void Builder::join_duplicate_states() {
         const Attempt& a = attempts[k];
         Pair& p = pairs[a.pair];
         walk.upto(p.i);
-        if (p.done) return true;  // (skip checked for a union just before)
-        counters_.merge(a.counters);
+        counters_.merge(a.counters);  // (not done: skip(k) was false just before)
         if (!a.joined) return true;
         p.done = true;
         const int r1 = representative(p.i), r2 = representative(p.j);
@@ -1375,7 +1374,6 @@ void Builder::retry_missing_links() {
       if (!(hw.cf == g.cf)) continue;
       TryResult r = try_hypothesis(scene_, start, hw, options_.measure_discretisation);
       counters.merge(r.counters);
-      r.counters = counters.fresh();
       return std::optional<TryResult>(std::move(r));
     }
     return std::optional<TryResult>();
@@ -1419,7 +1417,7 @@ void Builder::retry_missing_links() {
         Attempt& a = attempts[j];
         Group& g = groups[a.group];
         walk.upto(g.id);
-        if (g.done) return true;  // (skip checked for a link just before)
+        // (not done: skip(j) was false just before)
         if (a.member < 0 && g.members < members_[g.id].size()) {
           // Witnesses the walk added to the state since the attempts were listed come before
           // the waypoints: tried here, in order.

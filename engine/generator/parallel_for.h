@@ -86,17 +86,21 @@ void ordered_pipeline(size_t jobs, int threads, size_t window, Stop&& stop, Skip
   bool closing = false;
   std::mutex mutex;
   std::condition_variable work, finished;
+  // Under the lock, with a job queued: runs the first outside it.
+  auto run_first = [&](std::unique_lock<std::mutex>& lock) {
+    const size_t j = queue.front();
+    queue.pop_front();
+    lock.unlock();
+    job(j);
+    lock.lock();
+    if (status[j] == kQueued) status[j] = kDone;  // (not when skipped meanwhile)
+  };
   auto worker = [&] {
     std::unique_lock<std::mutex> lock(mutex);
     for (;;) {
       work.wait(lock, [&] { return closing || !queue.empty(); });
       if (closing) return;
-      const size_t j = queue.front();
-      queue.pop_front();
-      lock.unlock();
-      job(j);
-      lock.lock();
-      if (status[j] == kQueued) status[j] = kDone;  // (not when skipped meanwhile)
+      run_first(lock);
       finished.notify_one();
     }
   };
@@ -134,16 +138,10 @@ void ordered_pipeline(size_t jobs, int threads, size_t window, Stop&& stop, Skip
       // Until it is done, this thread runs started jobs too (the lowest first).
       std::unique_lock<std::mutex> lock(mutex);
       while (status[committed] == kQueued) {
-        if (queue.empty()) {
+        if (queue.empty())
           finished.wait(lock);
-          continue;
-        }
-        const size_t j = queue.front();
-        queue.pop_front();
-        lock.unlock();
-        job(j);
-        lock.lock();
-        if (status[j] == kQueued) status[j] = kDone;
+        else
+          run_first(lock);
       }
       head = status[committed];
     }

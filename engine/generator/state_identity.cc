@@ -259,8 +259,7 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
         moved[e] = moved_either_way(scene, nodes[i], nodes[j], cf, tried[e]);
       },
       [&](size_t e) {
-        const auto& [d, i, j] = edges[e];
-        if (root(i) == root(j)) return true;  // joined by an edge before it: not tried
+        const auto& [d, i, j] = edges[e];  // (open: skip(e) was false just before)
         ++motions;
         counters.merge(tried[e]);
         if (moved[e]) parent[root(i)] = root(j);
