@@ -363,6 +363,15 @@ class Builder {
   // poses, so the graph and the counters do not depend on the thread count.
   JoinsAhead joins_ahead(const ContactFormation& cf, const Pose& pose,
                          const std::vector<PointContact>& contacts) const;
+  // What find_state(cf, pose, contacts) with region signature `sig` tries: when a state of
+  // that CF and signature already holds the pose as a witness (the first such), no join;
+  // otherwise the witnesses of each state of that CF and signature, in id order.
+  struct JoinsToTry {
+    int holder = -1;
+    std::vector<int> states;
+  };
+  JoinsToTry joins_to_try(const ContactFormation& cf, const RegionSignature& sig,
+                          const Pose& pose) const;
   // The state of this CF whose region holds `pose` (whose exact contacts are `contacts`), or
   // -1. A witness joined to several states proves them one state (connectivity is
   // transitive): they are united, and merged when the run ends. `ahead` (optional): joins
@@ -570,23 +579,32 @@ int Builder::first_holding(size_t n, Test&& test) {
   return found;
 }
 
+Builder::JoinsToTry Builder::joins_to_try(const ContactFormation& cf, const RegionSignature& sig,
+                                          const Pose& pose) const {
+  JoinsToTry out;
+  for (const State& s : graph_.states) {
+    if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
+    for (const Witness& m : members_[s.id])
+      if (same_pose(m.pose, pose)) {
+        out.holder = s.id;
+        out.states.clear();
+        return out;
+      }
+    out.states.push_back(s.id);
+  }
+  return out;
+}
+
 Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose& pose,
                                          const std::vector<PointContact>& contacts) const {
   JoinsAhead joins;
-  const RegionSignature sig = region_signature(contacts);
-  for (const State& s : graph_.states)
-    if (s.cf == cf && signatures_[s.id] == sig)
-      for (const Witness& m : members_[s.id])
-        if (same_pose(m.pose, pose)) return joins;  // find_state tries no join
-  for (const State& s : graph_.states) {
-    if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
-    for (size_t m = 0; m < members_[s.id].size(); ++m) {
+  for (int id : joins_to_try(cf, region_signature(contacts), pose).states)
+    for (size_t m = 0; m < members_[id].size(); ++m) {
       MotionCounters c = counters_.fresh();
-      const bool joined = joined_within_cf(scene_, members_[s.id][m].pose, pose, cf, c, symmetry_);
-      joins[{s.id, static_cast<int>(m)}] = {joined, c};
+      const bool joined = joined_within_cf(scene_, members_[id][m].pose, pose, cf, c, symmetry_);
+      joins[{id, static_cast<int>(m)}] = {joined, c};
       if (joined) break;
     }
-  }
   return joins;
 }
 
@@ -608,18 +626,11 @@ std::vector<Builder::JoinsAhead> Builder::joins_ahead_of(
   for (size_t k = 0; k < found.size(); ++k) {
     if (!found[k]) continue;
     const Discovery& d = *found[k];
-    const RegionSignature sig = region_signature(d.contacts);
-    bool held = false;
-    for (const State& s : graph_.states)
-      if (s.cf == d.cf && signatures_[s.id] == sig)
-        for (const Witness& m : members_[s.id]) held = held || same_pose(m.pose, d.pose);
-    if (held) continue;  // find_state tries no join
-    for (const State& s : graph_.states) {
-      if (!(s.cf == d.cf) || signatures_[s.id] != sig) continue;
+    for (int id : joins_to_try(d.cf, region_signature(d.contacts), d.pose).states) {
       by_group.emplace_back();
-      for (size_t m = 0; m < members_[s.id].size(); ++m)
+      for (size_t m = 0; m < members_[id].size(); ++m)
         by_group.back().push_back(
-            {k, by_group.size() - 1, s.id, static_cast<int>(m), false, counters_.fresh()});
+            {k, by_group.size() - 1, id, static_cast<int>(m), false, counters_.fresh()});
       joins_listed += by_group.back().size();
     }
   }
@@ -648,25 +659,21 @@ std::vector<Builder::JoinsAhead> Builder::joins_ahead_of(
 int Builder::find_state(const ContactFormation& cf, const Pose& pose,
                         const std::vector<PointContact>& contacts, const JoinsAhead* ahead) {
   PhaseScope phase(*this, Phase::Identity);
-  const RegionSignature sig = region_signature(contacts);
   // A pose a state holds already (a mirror image's image is the witness itself): every join
   // from it was tried when it was placed.
-  for (const State& s : graph_.states)
-    if (s.cf == cf && signatures_[s.id] == sig)
-      for (const Witness& m : members_[s.id])
-        if (same_pose(m.pose, pose)) return s.id;
+  const JoinsToTry to_try = joins_to_try(cf, region_signature(contacts), pose);
+  if (to_try.holder >= 0) return to_try.holder;
   int found = -1;
-  for (const State& s : graph_.states) {
-    if (!(s.cf == cf) || signatures_[s.id] != sig) continue;
+  for (int id : to_try.states) {
     // Already known to be the state found: nothing to prove.
-    if (found >= 0 && representative(s.id) == representative(found)) continue;
-    const std::vector<Witness>& members = members_[s.id];
+    if (found >= 0 && representative(id) == representative(found)) continue;
+    const std::vector<Witness>& members = members_[id];
     // The joins run ahead first, in order; the members after them (added since) are tried
     // here, a batch at a time.
     size_t m = 0;
     bool joined = false;
     for (; ahead && m < members.size() && !joined; ++m) {
-      const auto known = ahead->find({s.id, static_cast<int>(m)});
+      const auto known = ahead->find({id, static_cast<int>(m)});
       if (known == ahead->end()) break;
       counters_.merge(known->second.second);
       joined = known->second.first;
@@ -677,12 +684,12 @@ int Builder::find_state(const ContactFormation& cf, const Pose& pose,
                }) >= 0;
     if (!joined) continue;
     if (found < 0) {
-      found = s.id;
-      if (members_[s.id].size() < kMaxMembersPerState)
-        members_[s.id].push_back({pose, contacts});
+      found = id;
+      if (members_[id].size() < kMaxMembersPerState)
+        members_[id].push_back({pose, contacts});
     } else {
       // `pose` joins both: one region, one state.
-      const int r1 = representative(found), r2 = representative(s.id);
+      const int r1 = representative(found), r2 = representative(id);
       united_[std::max(r1, r2)] = std::min(r1, r2);
     }
   }
