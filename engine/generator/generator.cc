@@ -1555,8 +1555,6 @@ StateGraph Builder::run() {
     graph_.stats.queries_by_phase.emplace_back(kPhaseNames[p], phase_queries_[p]);
   graph_.stats.pair_solves = counters_.pair_solves;
   graph_.stats.motion_steps = counters_.steps;
-  graph_.stats.events_located = counters_.events;
-  graph_.stats.event_samples = counters_.event_samples;
   graph_.stats.max_keep_drift = counters_.max_keep_drift;
   graph_.stats.max_step_penetration = counters_.max_step_penetration;
   for (const State& s : graph_.states)

@@ -56,10 +56,6 @@ struct GraphStats {
   long collision_queries = 0;  // contact/collision detections at a pose
   long pair_solves = 0;        // exact element-pair solves
   long motion_steps = 0;
-  // Events located within a motion step, and the poses observed to locate them (transition_
-  // motion.cc, locate_event: 30 each by bisection alone).
-  long events_located = 0;
-  long event_samples = 0;
   // With GeneratorOptions::measure_discretisation: the largest residual of a kept contact and
   // the deepest penetration, both at the midpoints of accepted motion steps (before
   // re-projection), over the whole run; and the largest witness contact residual.

@@ -96,9 +96,7 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
                         {"candidates", graph.candidates.size()},
                         {"collision_queries", graph.stats.collision_queries},
                         {"pair_solves", graph.stats.pair_solves},
-                        {"motion_steps", graph.stats.motion_steps},
-                        {"events_located", graph.stats.events_located},
-                        {"event_samples", graph.stats.event_samples}};
+                        {"motion_steps", graph.stats.motion_steps}};
   ordered_json phases = ordered_json::object();
   for (const auto& [phase, queries] : graph.stats.queries_by_phase) phases[phase] = queries;
   stats["collision_queries_by_phase"] = phases;

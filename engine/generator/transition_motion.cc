@@ -1,11 +1,9 @@
 #include "engine/generator/transition_motion.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "engine/contact/contact_classification.h"
 #include "engine/contact/contact_context.h"
 #include "engine/contact/contact_formation.h"
 #include "engine/contact/element_geometry.h"
@@ -54,31 +52,6 @@ constexpr int kMaxStalledSteps = 20;
 // its middle than the bracket's ends: the corrected poses tried by bisection stray from the
 // straight step by second-order amounts only (a pose outside is queried in full).
 constexpr double kBracketMargin = 1.25;
-// Locating an event (locate_event) by a scalar of the change (event_guide):
-// - kEventBand: where the detection disagrees with the scalar's level on a side, the next aim
-//   there is this part of the level away (then fourfold): the levels are exact for gaps and
-//   within 2.5e-3 on_boundary for the distance outside an element (measured on Example 1's rim),
-//   while a cone's first-order distance is off by ~5% (measured: Example 1, 1.2e-8 against
-//   1.3e-8).
-// - kAimPart, kAimReach: the first aims on either side of the level are kAimPart of
-//   kAimReach contact_gap away, as a displacement of the poses (the scalar's change over the
-//   bracket per unit of displacement): an eighth of the classification tolerances, so that
-//   when the level is exact the change is bracketed by two observations to ~4e-11 L, and
-//   bisection by the scalar's value takes it on to the resolution. (Aiming within the
-//   resolution itself, 10x closer, lost 2 of Example 2's 396 links: docs/where-the-time-goes.md.)
-// - kMaxGuided: observations placed by a scalar per event before bisection takes over (a
-//   scalar that does not locate the change, as on a bifurcation, costs at most this many).
-// - kMaxRootIterations, kRootBand: regula falsi for the scalar at an aim stops within this
-//   part of the first aims' offset of it (the scalar is smooth; 3-7 iterations measured).
-// - kEventMinPart: a regula falsi sample stays this part of its bracket off the ends, so a
-//   poor interpolation still shrinks the bracket.
-constexpr double kEventBand = 1.0 / 16;
-constexpr double kAimPart = 0.4;
-constexpr double kAimReach = 1.0 / 8;
-constexpr int kMaxGuided = 12;
-constexpr int kMaxRootIterations = 40;
-constexpr double kRootBand = 1.0 / 4;
-constexpr double kEventMinPart = 1.0 / 64;
 
 bool maintained(const Track& t) { return t.plan.action != ContactAction::Remove; }
 
@@ -167,49 +140,6 @@ class Motion {
                          DriveSystem& sys) const;
   void emit(const char* phase, const std::vector<PointContact>& contacts,
             const Observation* collision = nullptr) const;
-  // An event's bracket on the step X_ -> F.apply(X_, s * t): the observation at t = lo is
-  // Same, at t = hi it is `obs` (Y_hi and tracks_hi are those of the last pose observed at
-  // hi; `hi_observed` is false when hi was last moved by a pose that could not be corrected).
-  struct EventBracket {
-    double lo = 0, hi = 1;
-    Pose Y_lo, Y_hi;
-    std::vector<Track> tracks_lo, tracks_hi;
-    Observation obs;
-    bool hi_observed = true;
-  };
-  // Narrows `b` to a change of the observation along the step X_ -> F.apply(X_, s * t): an
-  // observed pose like X_ and one not (or one whose kept contacts cannot be corrected), a
-  // 2^-kBisections part of the step apart, as 30 bisections would. The observations are
-  // placed by the event's scalar where there is one (event_guide), by bisection otherwise.
-  void locate_event(const TwistFrame& F, const Twist& s, EventBracket& b) const;
-  // The bracket from X_ (t = 0) to the step's end Y at t = hi, observed as `obs`, located.
-  EventBracket locate_event(const TwistFrame& F, const Twist& s, double hi, const Pose& Y,
-                            std::vector<Track> moved, Observation obs) const;
-  // A smooth scalar of one element pair's solution whose crossing of `level` is the change
-  // `b.obs` shows, increasing across it (EventScalar::Kind says which).
-  struct EventScalar {
-    // Gap: minus the gap of a pair met (a penetration or new contact), at -contact_gap.
-    // Outside: a tracked contact's first-order distance outside its elements, at
-    // -on_boundary. Cone: how far a tracked contact's normal lies outside an edge's normal
-    // cone, at normal_cone. Separation: a tracked contact's gap, at contact_gap.
-    // Inside: a contact on new elements (the changing one arrived, or a kept one turned), how
-    // far its points lie inside them, at on_boundary.
-    // Flattening: a kept contact's smallest relative curvature along its sliding directions,
-    // negated, at curvature: past it the contact is a saddle and the pair penetrates beside it.
-    enum Kind { Gap, Outside, Cone, Separation, Inside, Flattening } kind = Gap;
-    ElementId a, b;
-    PtcType type = PtcType::FF;
-    double level = 0;
-  };
-  // The scalar for `b`'s event, with its solutions at the two ends, when it brackets its
-  // level there.
-  struct GuideEnds {
-    EventScalar f;
-    PointContact lo, hi;
-    double f_lo = 0, f_hi = 0;
-  };
-  std::optional<GuideEnds> event_guide(const EventBracket& b) const;
-  double scalar_value(const EventScalar& f, const PointContact& c, const Pose& Y) const;
   // After a step X_ -> F.apply(X_, s) whose observation `obs` was located by bisection at
   // the step fraction `lo` (the last pose like X_): when a settling contact leaves its new
   // region across the far side, settles it in the middle of the region along the step.
@@ -611,291 +541,6 @@ bool Motion::settle_within_step(const Observation& obs, const TwistFrame& F, con
   return true;
 }
 
-double Motion::scalar_value(const EventScalar& f, const PointContact& c, const Pose& Y) const {
-  switch (f.kind) {
-    case EventScalar::Gap:
-      return -c.gap;
-    case EventScalar::Separation:
-      return c.gap;
-    case EventScalar::Flattening:
-      return -sliding_curvature(scene_, Y, c);
-    case EventScalar::Inside:
-      return -std::max(worst_violation(scene_.A, element_surfaces(scene_.A, c.a), c.p_A).distance,
-                       worst_violation(scene_.B, element_surfaces(scene_.B, c.b), c.p_B).distance);
-    case EventScalar::Outside:
-      // the first-order distance outside the surfaces bounding each side's element
-      // (worst_violation: negative inside), the larger of the two sides
-      return std::max(worst_violation(scene_.A, element_surfaces(scene_.A, c.a), c.p_A).distance,
-                      worst_violation(scene_.B, element_surfaces(scene_.B, c.b), c.p_B).distance);
-    case EventScalar::Cone: {
-      // the normal's least-squares coefficients on the edge's two face normals: the smaller,
-      // times the sine between those normals, is the distance outside the cone to first
-      // order (negative inside); the larger over the sides on an edge
-      double worst = -std::numeric_limits<double>::infinity();
-      for (int side = 0; side < 2; ++side) {
-        const Solid& solid = side ? scene_.B : scene_.A;
-        const ElementId el = side ? c.b : c.a;
-        if (el.kind != ElementKind::Edge) continue;
-        const SurfaceSet set = element_surfaces(solid, el);
-        if (set.size != 2) continue;
-        const Eigen::Vector3d& p = side ? c.p_B : c.p_A;
-        const Eigen::Vector3d d = side ? Eigen::Vector3d(c.normal_B) : normal_in_A(Y, c);
-        const Eigen::Vector3d n1 = solid.surfaces[set.index[0]].gradient(p).normalized();
-        const Eigen::Vector3d n2 = solid.surfaces[set.index[1]].gradient(p).normalized();
-        Eigen::Matrix<double, 3, 2> N;
-        N << n1, n2;
-        const Eigen::Vector2d k = N.colPivHouseholderQr().solve(d);
-        worst = std::max(worst, -std::min(k[0], k[1]) * n1.cross(n2).norm());
-      }
-      return worst;
-    }
-  }
-  return 0;
-}
-
-std::optional<Motion::GuideEnds> Motion::event_guide(const EventBracket& b) const {
-  if (!b.hi_observed) return std::nullopt;
-  const Tolerances& tol = scene_.tol;
-  const Observation::Kind kind = b.obs.kind;
-  const PointContact& d = b.obs.detected;
-  // The pair (a, b) solved at both ends, hi's solve from (start_A, start_B) and lo's from
-  // lo_start, or from hi's solution.
-  GuideEnds g;
-  auto solve_ends = [&](ElementId a, ElementId el_b, PtcType type, const Eigen::Vector3d& start_A,
-                        const Eigen::Vector3d& start_B, const PointContact* lo_start) {
-    g.f.a = a;
-    g.f.b = el_b;
-    g.f.type = type;
-    counters_.pair_solves += 2;
-    auto hi = track_pair(scene_, b.Y_hi, a, el_b, type, start_A, start_B);
-    if (!hi) return false;
-    const PointContact& from = lo_start ? *lo_start : *hi;
-    auto lo = track_pair(scene_, b.Y_lo, a, el_b, type, from.p_A, from.p_B);
-    if (!lo) return false;
-    g.hi = *hi;
-    g.lo = *lo;
-    return true;
-  };
-  auto brackets = [&](EventScalar::Kind k, double level) {
-    g.f.kind = k;
-    g.f.level = level;
-    g.f_lo = scalar_value(g.f, g.lo, b.Y_lo);
-    g.f_hi = scalar_value(g.f, g.hi, b.Y_hi);
-    return std::isfinite(g.f_lo) && std::isfinite(g.f_hi) && g.f_lo < level && level <= g.f_hi;
-  };
-  if (kind == Observation::Collision) {
-    // the pair met, from the new contact or from the penetration's deepest point
-    const Eigen::Vector3d start_B = b.obs.new_contact ? d.p_B : d.point_B;
-    const Eigen::Vector3d start_A = b.obs.new_contact ? d.p_A : b.Y_hi.apply_inverse(d.point_B);
-    if (!solve_ends(d.a, d.b, ptc_type_between(d.a.kind, d.b.kind), start_A, start_B, nullptr))
-      return std::nullopt;
-    // its gap falls to contact_gap
-    if (brackets(EventScalar::Gap, -tol.contact_gap)) return g;
-    // its surfaces already cross at lo, outside its elements: the penetration begins where
-    // that crossing enters them
-    if (g.lo.gap < -tol.penetration && brackets(EventScalar::Inside, tol.on_boundary)) return g;
-    // a contact of the pair at lo (not kept there) goes on to penetrate
-    if (std::abs(g.lo.gap) > tol.contact_gap) return std::nullopt;
-    if (brackets(EventScalar::Gap, tol.penetration)) return g;
-    // a kept contact of the pair (the one solved at lo) flattens, and the pair penetrates
-    // beside it: that contact's curvature, solved at hi from lo
-    ++counters_.pair_solves;
-    auto hi = track_pair(scene_, b.Y_hi, d.a, d.b, g.f.type, g.lo.p_A, g.lo.p_B);
-    if (!hi || std::abs(hi->gap) > tol.contact_gap) return std::nullopt;
-    g.hi = *hi;
-    if (brackets(EventScalar::Flattening, tol.curvature)) return g;
-    return std::nullopt;
-  }
-  if (b.obs.track < 0 || !(kind == Observation::Event || kind == Observation::KeptChanged ||
-                           kind == Observation::Missing))
-    return std::nullopt;
-  // A contact seen on new elements (the changing one arrived, or a kept one turned): it
-  // enters them.
-  if (kind != Observation::Missing && solve_ends(d.a, d.b, d.type, d.p_A, d.p_B, nullptr) &&
-      brackets(EventScalar::Inside, tol.on_boundary))
-    return g;
-  // The tracked contact: it leaves its elements, its normal leaves an edge's cone, or it
-  // separates.
-  const size_t i = static_cast<size_t>(b.obs.track);
-  const PointContact& c = b.tracks_hi[i].c;
-  if (!solve_ends(c.a, c.b, c.type, c.p_A, c.p_B, &b.tracks_lo[i].c)) return std::nullopt;
-  if (brackets(EventScalar::Outside, -tol.on_boundary)) return g;
-  if ((c.a.kind == ElementKind::Edge || c.b.kind == ElementKind::Edge) &&
-      brackets(EventScalar::Cone, tol.normal_cone))
-    return g;
-  if (brackets(EventScalar::Separation, tol.contact_gap)) return g;
-  return std::nullopt;
-}
-
-Motion::EventBracket Motion::locate_event(const TwistFrame& F, const Twist& s, double hi,
-                                          const Pose& Y, std::vector<Track> moved,
-                                          Observation obs) const {
-  EventBracket b;
-  b.hi = hi;
-  b.Y_lo = X_;
-  b.Y_hi = Y;
-  b.tracks_lo = tracks_;
-  b.tracks_hi = std::move(moved);
-  b.obs = std::move(obs);
-  locate_event(F, s, b);
-  return b;
-}
-
-void Motion::locate_event(const TwistFrame& F, const Twist& s, EventBracket& b) const {
-  ++counters_.events;
-  BracketTriangles bracket(*context_, kBracketMargin);
-  const double resolution = std::ldexp(b.hi - b.lo, -kBisections);
-  // Observes the pose at t and moves the end of the bracket on its side (a pose whose kept
-  // contacts cannot be corrected counts as past the event, as a change of its own). True when
-  // the pose is like the one at lo.
-  auto observe = [&](double t) {
-    ++counters_.event_samples;
-    const NearbyTriangles* nearby = bracket.update(b.Y_lo, b.Y_hi);
-    std::vector<Track> tm = tracks_;
-    auto Ym = correct(F.apply(X_, s * t), tm);
-    if (!Ym) {
-      b.hi = t;
-      b.hi_observed = false;
-      return false;
-    }
-    Observation om = classify(*Ym, tm, nearby);
-    if (om.kind == Observation::Same) {
-      b.lo = t;
-      b.Y_lo = *Ym;
-      b.tracks_lo = std::move(tm);
-      return true;
-    }
-    b.hi = t;
-    b.Y_hi = *Ym;
-    b.tracks_hi = std::move(tm);
-    b.obs = std::move(om);
-    b.hi_observed = true;
-    return false;
-  };
-  auto located = [&] { return b.hi - b.lo <= resolution; };
-  int guided = 0;  // observations placed by a scalar
-  while (!located()) {
-    if (!b.hi_observed) {
-      // The kept contacts cannot be corrected at hi: where that begins is found by corrections
-      // alone, and only the last pose they reach is observed.
-      double ok = b.lo, fails = b.hi;
-      while (fails - ok > resolution) {
-        const double mid = 0.5 * (ok + fails);
-        std::vector<Track> tm = tracks_;
-        (correct(F.apply(X_, s * mid), tm) ? ok : fails) = mid;
-      }
-      if (ok > b.lo && observe(ok)) b.hi = fails;
-      if (ok == b.lo) b.hi = fails;
-      continue;
-    }
-    std::optional<GuideEnds> g;
-    if (guided < kMaxGuided) g = event_guide(b);
-    if (!g) {
-      observe(0.5 * (b.lo + b.hi));
-      continue;
-    }
-    // The change lies where the scalar is between its values at the two ends, expected at
-    // f.level. Each observation is placed where the scalar takes an aimed value (found on the
-    // scalar alone: a correction and one pair solve per pose): first a band above and below
-    // the level; when the detection disagrees on a side, four times farther on that side;
-    // once the change is within the aims, halfway between the ends' values.
-    const EventScalar f = g->f;
-    // The first aims are kAimPart of kAimReach away from the level, as a displacement of the
-    // poses (the scalar's change per unit of displacement over the bracket). When the
-    // detection disagrees on a side, the aims there go out to a band of the level, then
-    // fourfold.
-    const double wide = kEventBand * std::abs(f.level);
-    const double spread = context_->displacement(b.Y_lo, b.Y_hi);
-    const double band = spread > 0 ? std::min(wide, kAimPart * kAimReach * scene_.tol.contact_gap *
-                                                        (g->f_hi - g->f_lo) / spread)
-                                   : wide;
-    double tl = b.lo, th = b.hi, vl = g->f_lo, vh = g->f_hi;
-    PointContact cl = g->lo, ch = g->hi;
-    double up = band, down = band;
-    bool lost = false;
-    bool above = false, below = false;  // the change is known below level + up, above level - down
-    while (!located() && guided < kMaxGuided && !lost) {
-      while (f.level + up <= vl) up = std::max(4 * up, wide);
-      while (f.level - down >= vh) down = std::max(4 * down, wide);
-      if (f.level + up >= vh) above = true;
-      if (f.level - down <= vl) below = true;
-      double aim;
-      int tried = 0;  // +1: aimed above the level, -1: below
-      if (!above) {
-        aim = f.level + up;
-        tried = 1;
-      } else if (!below) {
-        aim = f.level - down;
-        tried = -1;
-      } else {
-        aim = 0.5 * (vl + vh);
-      }
-      // Regula falsi with the Illinois rule for scalar = aim on [tl, th].
-      double al = vl - aim, ah = vh - aim, sl = tl, sh = th;
-      PointContact pl = cl, ph = ch;
-      double t = 0, v = 0;
-      PointContact c;
-      int side = 0;
-      bool found = false;
-      for (int k = 0; k < kMaxRootIterations; ++k) {
-        t = std::clamp(sl + (sh - sl) * al / (al - ah), sl + kEventMinPart * (sh - sl),
-                       sh - kEventMinPart * (sh - sl));
-        std::vector<Track> tm = tracks_;
-        auto Y = correct(F.apply(X_, s * t), tm);
-        if (!Y) break;
-        const PointContact& near = t - sl < sh - t ? pl : ph;
-        ++counters_.pair_solves;
-        auto sol = track_pair(scene_, *Y, f.a, f.b, f.type, near.p_A, near.p_B);
-        if (!sol) break;
-        v = scalar_value(f, *sol, *Y);
-        if (!std::isfinite(v)) break;
-        c = *sol;
-        if (std::abs(v - aim) <= kRootBand * band || sh - sl <= resolution) {
-          found = true;
-          break;
-        }
-        if (v < aim) {
-          sl = t, al = v - aim, pl = c;
-          if (side == -1) ah *= 0.5;
-          side = -1;
-        } else {
-          sh = t, ah = v - aim, ph = c;
-          if (side == 1) al *= 0.5;
-          side = 1;
-        }
-      }
-      if (!found) {
-        guided = kMaxGuided;  // the scalar cannot be followed here: bisection takes over
-        break;
-      }
-      ++guided;
-      const ElementId was_a = b.obs.detected.a, was_b = b.obs.detected.b;
-      const Observation::Kind was = b.obs.kind;
-      const bool like_lo = observe(t);
-      if (tried == 1) {
-        if (like_lo)
-          up = std::max(4 * up, wide);
-        else
-          above = true;
-      }
-      if (tried == -1) {
-        if (like_lo)
-          below = true;
-        else
-          down = std::max(4 * down, wide);
-      }
-      if (like_lo) {
-        tl = t, vl = v, cl = c;
-      } else {
-        th = t, vh = v, ch = c;
-        // another change met first: its own scalar, if any, guides from here
-        lost = !b.hi_observed || b.obs.kind != was || !(b.obs.detected.a == was_a) ||
-               !(b.obs.detected.b == was_b);
-      }
-    }
-  }
-}
-
 void Motion::leave_touches() {
   // Two rims touching with collinear tangents: the touch point is also a stationary point, on
   // the face's boundary, of each pair of one rim and a face of the other rim (the normal
@@ -987,13 +632,31 @@ MotionOutcome Motion::run() {
 
     if (obs.kind != Observation::Same) {
       // Locate the event between the last good pose and this one.
-      EventBracket b = locate_event(F, *s, frac, *Y, std::move(moved), std::move(obs));
-      const double lo = b.lo;
-      const Pose& Y_lo = b.Y_lo;
-      const Pose& Y_hi = b.Y_hi;
-      std::vector<Track>& tracks_lo = b.tracks_lo;
-      std::vector<Track>& tracks_hi = b.tracks_hi;
-      obs = std::move(b.obs);
+      double lo = 0, hi = frac;
+      Pose Y_hi = *Y, Y_lo = X_;
+      std::vector<Track> tracks_hi = moved, tracks_lo = tracks_;
+      BracketTriangles bracket(*context_, kBracketMargin);
+      for (int k = 0; k < kBisections; ++k) {
+        const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
+        const double mid = 0.5 * (lo + hi);
+        std::vector<Track> tm = tracks_;
+        auto Ym = correct(F.apply(X_, *s * mid), tm);
+        if (!Ym) {
+          hi = mid;
+          continue;
+        }
+        Observation om = classify(*Ym, tm, nearby);
+        if (om.kind == Observation::Same) {
+          lo = mid;
+          Y_lo = *Ym;
+          tracks_lo = tm;
+        } else {
+          hi = mid;
+          Y_hi = *Ym;
+          tracks_hi = tm;
+          obs = om;
+        }
+      }
       ++step_;
       ++counters_.steps;
       if (settle_within_step(obs, F, *s, lo)) continue;
@@ -1276,10 +939,30 @@ std::optional<Discovery> Motion::probe(const std::function<Twist(const TwistFram
     }
     if (obs.kind != Observation::Collision) return std::nullopt;
     // Locate the first touch of the new contact between X_ and Y.
-    EventBracket b = locate_event(F, *s, 1, *Y, std::move(moved), std::move(obs));
-    if (!b.obs.new_contact) return std::nullopt;
-    X_ = b.Y_hi;
-    obs = std::move(b.obs);
+    double lo = 0, hi = 1;
+    Pose Y_hi = *Y, Y_lo = X_;
+    BracketTriangles bracket(*context_, kBracketMargin);
+    for (int k = 0; k < kBisections; ++k) {
+      const NearbyTriangles* nearby = bracket.update(Y_lo, Y_hi);
+      const double mid = 0.5 * (lo + hi);
+      std::vector<Track> tm = tracks_;
+      auto Ym = correct(F.apply(X_, *s * mid), tm);
+      if (!Ym) {
+        hi = mid;
+        continue;
+      }
+      Observation om = classify(*Ym, tm, nearby);
+      if (om.kind == Observation::Same) {
+        lo = mid;
+        Y_lo = *Ym;
+      } else {
+        hi = mid;
+        Y_hi = *Ym;
+        obs = om;
+      }
+    }
+    if (!obs.new_contact) return std::nullopt;
+    X_ = Y_hi;
     return discover(obs.contacts);
   }
   return std::nullopt;

@@ -39,9 +39,6 @@ struct MotionCounters {
   long detections = 0;
   long pair_solves = 0;
   long steps = 0;
-  // Events located within a step (locate_event), and the poses observed to locate them.
-  long events = 0;
-  long event_samples = 0;
   // Discretisation measurements (only when `measure` is set): see GraphStats.
   bool measure = false;
   double max_keep_drift = 0;
@@ -59,8 +56,6 @@ struct MotionCounters {
     detections += o.detections;
     pair_solves += o.pair_solves;
     steps += o.steps;
-    events += o.events;
-    event_samples += o.event_samples;
     max_keep_drift = std::max(max_keep_drift, o.max_keep_drift);
     max_step_penetration = std::max(max_step_penetration, o.max_step_penetration);
   }

@@ -198,24 +198,6 @@ TEST(Generator, QueriesByPhaseAddUpToTheTotal) {
   EXPECT_GT(g.graph.stats.queries_by_phase[1].second, 0);
 }
 
-// Events are located by their scalars (transition_motion.cc, locate_event), not by bisection
-// alone, which observes 30 poses per event: on the lens against a ball (~1 s) the 6 events
-// took 39 observations at session 35. The graph's statistics report both counts.
-TEST(Generator, EventsAreLocatedInFewerObservationsThanBisection) {
-  const Generated g =
-      generate(load_scene_file(testing::scene_path("stress/weak_edge_sine_0.1.yaml")));
-  const GraphStats& s = g.graph.stats;
-  ASSERT_GT(s.events_located, 0);
-  EXPECT_LE(s.event_samples, 15 * s.events_located)
-      << s.event_samples << " observations for " << s.events_located << " events";
-  GraphJsonOptions opt;
-  opt.include_timing = false;
-  const std::string json = graph_to_json(g.graph, g.scene, opt);
-  EXPECT_NE(json.find("\"events_located\": " + std::to_string(s.events_located)),
-            std::string::npos);
-  EXPECT_NE(json.find("\"event_samples\": " + std::to_string(s.event_samples)), std::string::npos);
-}
-
 // The phases after the BFS levels report their progress (a long Example 2 run otherwise shows
 // a still progress line for minutes): each names its phase and unit, counts up within
 // [0, total], and the retries report from the calling thread, with and without worker threads.
