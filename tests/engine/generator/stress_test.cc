@@ -214,6 +214,23 @@ TEST(StressFrames, Example2FarFromTheOriginAndRotated) {
   testing::expect_witnesses_valid(g);
 }
 
+// Example 2 with B moved by a small rigid motion (example2_moved.yaml: the rotation of
+// example2_far_rotated.yaml, a translation of 0.56 instead of 1.3e5, so no digits cancel).
+// Open since session 35. Measured with session 34's engine (two threads, 426 s): 38 states,
+// 382 links, 27 of Example 2's 29 CFs and 141 of its 149 distinct LN links. Both states of
+// {(fA1-e1, 2), (fA1-f1, 1)} and of its fA2 image are missing, with their links. Those states
+// are reached from the 3-contact states only where a changing and a kept contact change
+// within ~1e-10 L of each other in the right order, or by a retry from a second witness, so
+// the graph depends on where the events and witnesses fall (docs/where-the-time-goes.md,
+// session 35).
+TEST(StressFrames, Example2MovedByASmallRigidMotion) {
+  GTEST_SKIP() << "open since session 35: 27 of Example 2's 29 CFs and 141 of its 149 distinct "
+                  "links (the 3-contact transitions' near-tie, docs/where-the-time-goes.md)";
+  const Generated g = generate(load_scene_file(stress_path("example2_moved.yaml")));
+  testing::expect_stored_signature(testing::signature(g.graph, g.scene), "example2");
+  testing::expect_witnesses_valid(g);
+}
+
 // Each face written 1e8 or 1e-8 times over: fixed by dividing each row of the Newton
 // projections onto curves and vertices by its gradient's norm (surface.cc); the test used
 // to skip with "build_scene_geometry throws: edge 'e1': faces f1 and f2 never meet".
