@@ -68,7 +68,7 @@ TEST(StressScenes, IllScaledFilesHoldExample1sSurfaces) {
   }
 }
 
-TEST(StressScenes, FarRotatedFilesHoldTheExamplesMoved) {
+TEST(StressScenes, FarRotatedAndMovedFilesHoldTheExamplesMoved) {
   for (int n : {1, 2}) {
     const std::string file = "example" + std::to_string(n) + "_far_rotated.yaml";
     SCOPED_TRACE(file);
@@ -77,6 +77,13 @@ TEST(StressScenes, FarRotatedFilesHoldTheExamplesMoved) {
     testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
     testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
   }
+  // example2_moved.yaml: the same rotation, translated by (0.5, -0.25, 0.125) only
+  Pose small = far_rotation();
+  small.position = {0.5, -0.25, 0.125};
+  const SceneSpec got = load_scene_file(stress_path("example2_moved.yaml"));
+  const SceneSpec want = moved_scene(example(2), small);
+  testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
+  testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
 }
 
 // Both length units in one test: three generations of Example 1 (~5 s each on one core).
