@@ -168,6 +168,32 @@ TEST(Generator, Example2WitnessesAreExact) {
   }
 }
 
+// Four CFs of Example 2 its graph lacks: {(fA1-e1, 2)} (the lens across the rim on one cap
+// alone), {(fA1-e1, 1), (fA1-f1, 1)} (one cap on the rim and the dish) and their images under
+// the lens turned over, each a real state (ExampleScenes.Example2StatesItsGraphLacks: exact
+// contacts, no penetration). Open since session 36, measured: no run of Example 2 in any frame
+// has held them with main's engine. The motions that would reach them stop where two
+// contacts of one pair merge within a step: from {(fA1-e1, 2), (fA1-f1, 1)} the separation
+// from the dish fails at step 1, "collision: fA1-e1 penetrate", the two rim contacts merging
+// before the dish contact is half a step away. With session 36's two patches (settling and
+// releasing stopped before such a merge; not landed) Example 2 grows 49 states over 33 CFs,
+// 484 links, every CF and link of the stored signature and these four CFs
+// (docs/paper-comparison.md, session 36).
+TEST(Generator, Example2HoldsEveryStateFoundSoFar) {
+  GTEST_SKIP() << "open since session 36: Example 2's graph lacks four real CFs, "
+                  "{(fA1-e1, 2)}, {(fA1-e1, 1), (fA1-f1, 1)} and their images "
+                  "(docs/paper-comparison.md, session 36)";
+  const Generated g = generate(load_scene_file(testing::scene_path("example2.yaml")));
+  std::set<std::string> cfs;
+  for (const State& s : g.graph.states) cfs.insert(s.cf.str(g.scene));
+  for (const char* cf : {"{(fA1-e1, 2)}", "{(fA2-e1, 2)}", "{(fA1-e1, 1), (fA1-f1, 1)}",
+                         "{(fA2-e1, 1), (fA2-f1, 1)}"})
+    EXPECT_TRUE(cfs.count(cf)) << cf;
+  for (const std::string& cf : testing::read_signature("example2").states)
+    EXPECT_TRUE(cfs.count(cf)) << cf;
+  expect_witnesses_valid(g);
+}
+
 TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
   const Generated one = generate(spec, 1), two = generate(spec, 2);

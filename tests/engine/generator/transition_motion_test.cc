@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/contact/contact.h"
 #include "engine/contact/contact_formation.h"
+#include "engine/generator/generator.h"
+#include "engine/generator/hypothesis.h"
 #include "engine/geometry/scene_geometry.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/scene_swap.h"
@@ -127,6 +130,67 @@ TEST(ReferenceBody, IsTheSmallerObjectWhicheverIsCalledA) {
   twins.B.name = "B";
   const SceneGeometry tie = build_scene_geometry(twins);
   EXPECT_TRUE(ReferenceBody(tie).is_a);
+}
+
+// The lens across the bowl's rim in Example 2 moved by a small rigid motion (state 35 of that
+// scene's graph in session 35, {(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)}): slidingB turns A about
+// eA's tangent until the rim crossing eA-e1 becomes a second fA1-e1 contact (step 2), 0.37
+// from the first. Settling into fA1 then slides both fA1-e1 contacts along the rim toward each
+// other (0.24 per step); the whole step merges them, fA1 crossing e1 at 0.32 of it, and the
+// motion fails: "collision: fA1-e1 penetrate at (4.38477, 0.703187, 0.127099) at step 3". So
+// it does from every witness of both 3-contact states and in both hands, and that scene's
+// graph lacks {(fA1-e1, 2), (fA1-f1, 1)} and its image
+// (StressFrames.Example2MovedByASmallRigidMotion). Settling only seeks a witness inside the
+// new region, and the middle of the step's part before the merge is one.
+// Open since session 36. Settling there (the middle of [0, 0.32] of the step) makes this
+// motion arrive and gives the moved scene all 29 CFs and 149 distinct links of Example 2, but
+// it also lets other motions arrive: Example 2 far and rotated then grows {(fA1-e1, 2)} and
+// {(fA2-e1, 2)} (real states that Example 2's own graph lacks:
+// ExampleScenes.Example2StatesItsGraphLacks) and 14 distinct links more, the lens
+// tip in the dish a third {(eA-e1, 1)}, and Example 1 with B moved other links
+// (docs/paper-comparison.md, session 36). Its patch waits until every frame grows the same.
+TEST(TransitionMotion, SettlesBeforeTwoContactsOfOnePairMerge) {
+  GTEST_SKIP() << "open since session 36: settling is not stopped before two contacts of one "
+                  "pair merge (collision: fA1-e1 penetrate at step 3); the fix changes other "
+                  "frames' graphs (docs/paper-comparison.md, session 36)";
+  const SceneGeometry scene = build_scene_geometry(
+      load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/stress/example2_moved.yaml"));
+  const Pose start = parse_pose(
+      "4.065984102675289 -0.4703582117111504 1.043461390268394 0.356177783366565 "
+      "0.8849295602430861 0.11369391120036584 0.2776882327359626");
+  const ContactReport rep = detect_contacts(scene, start);
+  ASSERT_FALSE(rep.penetrating());
+  ASSERT_EQ(ContactFormation::of(rep.contacts).str(scene),
+            "{(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)}");
+  const ContactFormation target = ContactFormation::parse("{(fA1-e1, 2), (fA1-f1, 1)}", scene);
+  const std::vector<Hypothesis> hs = hypothesise_ln(scene, rep.contacts);
+  const auto h =
+      std::find_if(hs.begin(), hs.end(), [&](const Hypothesis& x) { return x.cf == target; });
+  ASSERT_NE(h, hs.end());
+  // the plan that keeps fA1-f1 and fA1-e1 and changes eA-e1 (its A element) into fA1-e1
+  const auto plan = std::find_if(h->plan_options.begin(), h->plan_options.end(),
+                                 [&](const std::vector<ContactPlan>& p) {
+                                   for (size_t i = 0; i < p.size(); ++i)
+                                     if ((p[i].action == ContactAction::Change) !=
+                                         (rep.contacts[i].a.kind == ElementKind::Edge))
+                                       return false;
+                                   return true;
+                                 });
+  ASSERT_NE(plan, h->plan_options.end());
+  std::vector<std::string> phases;
+  MotionCounters counters;
+  const MotionOutcome o =
+      run_transition_motion(scene, start, rep.contacts, *plan, target, motion_variants()[0],
+                            counters, [&](const MotionFrame& f) { phases.push_back(f.phase); });
+  ASSERT_TRUE(o.feasible) << o.reason;
+  EXPECT_EQ(o.motion, "slidingB+rotation");
+  // the event, then the settling within the step
+  EXPECT_NE(std::find(phases.begin(), phases.end(), "event"), phases.end());
+  EXPECT_NE(std::find(phases.begin(), phases.end(), "settle"), phases.end());
+  const ContactReport end = detect_contacts(scene, o.end);
+  EXPECT_FALSE(end.penetrating());
+  EXPECT_TRUE(ContactFormation::of(end.contacts) == target)
+      << ContactFormation::of(end.contacts).str(scene);
 }
 
 }  // namespace
