@@ -68,6 +68,11 @@ struct ContactLine {
 std::optional<ContactPlane> contact_plane(const PointContact& c);
 std::optional<ContactLine> contact_line(const PointContact& c);
 
+// For an e-e-cross contact, the sign of (t_A x t_B) . n_B (+1 or -1): which way the edges
+// cross. It changes only where the tangents are parallel (e-e-touch, another CF), so it is
+// constant on each CF-connected region (region_signature, state_identity.h).
+int crossing_sign(const PointContact& c);
+
 struct Penetration {
   ElementId a, b;
   Eigen::Vector3d point_B = Eigen::Vector3d::Zero();  // deepest point found, B's frame

@@ -72,4 +72,8 @@ std::optional<ContactLine> contact_line(const PointContact& c) {
   return ContactLine{c.point_B, c.type == PtcType::EV ? c.tangent_a_B : c.tangent_b_B};
 }
 
+int crossing_sign(const PointContact& c) {
+  return c.tangent_a_B.cross(c.tangent_b_B).dot(c.normal_B) > 0 ? 1 : -1;
+}
+
 }  // namespace pcsg

@@ -15,9 +15,8 @@ RegionSignature region_signature(const std::vector<PointContact>& contacts) {
   RegionSignature sig;
   for (const PointContact& c : contacts) {
     if (c.type != PtcType::EECross) continue;
-    const double s = c.tangent_a_B.cross(c.tangent_b_B).dot(c.normal_B);
-    sig.emplace_back(static_cast<int>(c.a.kind), c.a.index, static_cast<int>(c.b.kind),
-                     c.b.index, s > 0 ? 1 : -1);
+    sig.emplace_back(static_cast<int>(c.a.kind), c.a.index, static_cast<int>(c.b.kind), c.b.index,
+                     crossing_sign(c));
   }
   std::sort(sig.begin(), sig.end());
   return sig;

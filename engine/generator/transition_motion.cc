@@ -267,7 +267,12 @@ bool Motion::resolve(const Pose& Y, std::vector<Track>& tracks, int* lost) const
     if (!maintained(t)) continue;
     ++counters_.pair_solves;
     auto s = track_pair(scene_, Y, t.c.a, t.c.b, t.c.type, t.c.p_A, t.c.p_B);
-    if (!s) {
+    // An e-e-cross contact whose crossing sign flipped has passed through e-e-touch (another
+    // CF) within the step: the sign is the region's invariant (region_signature). Lost, so
+    // the step is shortened or the motion ends. The lens tip in the dish (stress scene): a
+    // travel between two rim crossings {(eA-e1, 1)} of opposite signs arrived, joining them.
+    if (!s || (t.c.type == PtcType::EECross && s->type == PtcType::EECross &&
+               crossing_sign(*s) != crossing_sign(t.c))) {
       if (lost) *lost = static_cast<int>(i);
       return false;
     }

@@ -9,6 +9,7 @@
 #include "engine/contact/contact_formation.h"
 #include "engine/generator/generator.h"
 #include "engine/generator/hypothesis.h"
+#include "engine/generator/state_identity.h"
 #include "engine/geometry/scene_geometry.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/scene_swap.h"
@@ -54,6 +55,35 @@ TEST(ConnectedWithinCf, KeepsAContactFarFromBsOrigin) {
       EXPECT_GT(counters.steps, 1) << i << " " << j;  // a motion in steps, not a jump
     }
   EXPECT_EQ(arrived, motions);
+}
+
+// The lens standing in the dish (stress/lens_tip_in_dish.yaml), its rim crossing the dish's
+// rim e1 at one point: two witnesses of {(eA-e1, 1)} whose crossings have opposite signs
+// ((t_A x t_B) . n), so two regions: the sign changes only through e-e-touch, another CF
+// (region_signature). Until session 37 the travel from the second to the first arrived, a
+// step carrying the crossing through e-e-touch between two poses that both cross, and
+// joined_within_cf joined them; the generator never asked (it joins only witnesses of one
+// signature), but a transition motion keeping a crossing could pass the same way.
+TEST(ConnectedWithinCf, NeverJoinsRimCrossingsOfOppositeSigns) {
+  const SceneGeometry scene = build_scene_geometry(
+      load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/stress/lens_tip_in_dish.yaml"));
+  const Pose a = parse_pose(
+      "-0.8828715551371804 -3.1466473590171224 3.9320614300344157 0.7290981603444406 "
+      "-0.6589916018676917 0.1847861913912958 -6.871175661680052e-05");
+  const Pose b = parse_pose(
+      "-1.5312548579834855 -3.9748601048043986 3.409913201986346 0.6921256935011126 "
+      "0.0049368158492335695 0.6360798736045027 -0.3410865676630416");
+  const ContactReport ra = detect_contacts(scene, a), rb = detect_contacts(scene, b);
+  ASSERT_FALSE(ra.penetrating());
+  ASSERT_FALSE(rb.penetrating());
+  const ContactFormation cf = ContactFormation::of(ra.contacts);
+  ASSERT_EQ(cf.str(scene), "{(eA-e1, 1)}");
+  ASSERT_TRUE(ContactFormation::of(rb.contacts) == cf);
+  ASSERT_NE(region_signature(ra.contacts), region_signature(rb.contacts));
+  MotionCounters counters;
+  EXPECT_FALSE(connected_within_cf(scene, a, b, cf, counters));
+  EXPECT_FALSE(connected_within_cf(scene, b, a, cf, counters));
+  EXPECT_FALSE(joined_within_cf(scene, a, b, cf, counters, SceneSymmetry::of(scene)));
 }
 
 // A remembered answer is the computed one: the same verdict and the same counters whether the
