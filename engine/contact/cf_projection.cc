@@ -130,6 +130,11 @@ ProjectionResult project_onto_cf(const ContactContext& context, const Pose& star
     Eigen::MatrixXd Js(cur.J.rows(), 6);
     Js.leftCols<3>() = cur.J.leftCols<3>();
     Js.rightCols<3>() = (cur.J.leftCols<3>() * skew(c) + cur.J.rightCols<3>()) / L;
+    // (Eigen's pivoting decompositions read out of bounds on non-finite input: pair_touch.cc)
+    if (!Js.allFinite() || !cur.r.allFinite()) {
+      result.reason = "the contacts' rows are not finite";
+      return result;
+    }
     Eigen::Matrix<double, 6, 1> step = -Js.completeOrthogonalDecomposition().solve(cur.r);
     const double size = std::max(step.head<3>().norm(), step.tail<3>().norm());
     if (size > tol.projection_step) step *= tol.projection_step / size;

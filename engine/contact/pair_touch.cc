@@ -41,6 +41,10 @@ TouchSolution solve_touch(const PairSetup& setup, const Eigen::Vector3d& start_A
     Eigen::Matrix<double, 3, 6> Jm;
     Jm.leftCols<3>() = sigma * R * ca.tangent_derivative() * L;
     Jm.rightCols<3>() = -cb.tangent_derivative() * L;
+    // A point where an edge's two faces are tangent has no tangent line (Example 2's f2 and
+    // f3 at B's bottom pole, a mesh vertex of f3, so a detection start): the rows are not
+    // finite, and Eigen's JacobiSVD reads out of bounds on them. No touch is found from there.
+    if (!c.allFinite() || !Jc.allFinite() || !Jm.allFinite()) return out;
     // Minimum-norm restoration of the constraints, then the best step along their null space.
     const Eigen::JacobiSVD<Eigen::Matrix<double, 5, 6>> svd(Jc, Eigen::ComputeFullV |
                                                                     Eigen::ComputeFullU);

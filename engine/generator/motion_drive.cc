@@ -1,6 +1,7 @@
 #include "engine/generator/motion_drive.h"
 
 #include <Eigen/SVD>
+#include <cmath>
 #include <limits>
 
 #include "engine/contact/pair_solver.h"
@@ -83,6 +84,12 @@ Eigen::MatrixXd null_space(const std::vector<Eigen::Matrix<double, 1, 6>>& rows)
 }  // namespace
 
 std::optional<Twist> DriveSystem::solve() const {
+  // Eigen's JacobiSVD reads out of bounds on non-finite input (pair_touch.cc): a row from a
+  // degenerate point (an edge's faces tangent there) gives no drive.
+  for (const auto& r : hard)
+    if (!r.allFinite()) return std::nullopt;
+  for (size_t i = 0; i < drive.size(); ++i)
+    if (!drive[i].allFinite() || !std::isfinite(target[i])) return std::nullopt;
   const Eigen::MatrixXd N = null_space(hard);
   if (N.cols() == 0 || drive.empty()) return std::nullopt;
   Eigen::MatrixXd D(drive.size(), 6);
@@ -113,6 +120,8 @@ std::optional<Twist> DriveSystem::solve() const {
 }
 
 Twist minimum_norm_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
+  // no step from non-finite rows (read out of bounds by Eigen's pivoting QR otherwise)
+  if (!J.allFinite() || !r.allFinite()) return Twist::Zero();
   const Eigen::VectorXd d = J.completeOrthogonalDecomposition().solve(-r);
   return d;
 }

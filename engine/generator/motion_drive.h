@@ -46,7 +46,8 @@ struct DriveSystem {
   std::optional<Twist> solve() const;
 };
 
-// Least-norm correction twist for residuals r with rows J (Gauss-Newton, minimum norm).
+// Least-norm correction twist for residuals r with rows J (Gauss-Newton, minimum norm); zero
+// when J or r is not finite, so the caller's iteration makes no progress and gives up.
 Twist minimum_norm_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r);
 
 // Geometry of a target element on solid S (directions in S's own frame).

@@ -101,6 +101,24 @@ TEST(SolvePair, RejectsATypeThatDoesNotJoinTheElements) {
                std::invalid_argument);
 }
 
+// Example 2's B: its sphere band f2 and its bottom f3 (x^2 + y^2 - 4z <= 16) are tangent at
+// f3's apex (0, 0, -4), a vertex of f3's mesh, so rim e2's two face gradients are parallel
+// there and the rim has no tangent. An e-e-touch solve started there (a mesh start of the
+// detection, session 38: Example 2 moved by a small rigid motion, joining two witnesses of
+// {(fA2-e1, 2)}) fed non-finite rows to Eigen's JacobiSVD, which read out of bounds and the
+// run died of a segmentation fault. It must refuse instead.
+TEST(SolvePair, RefusesATouchStartWhereTheRimHasNoTangent) {
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/example2.yaml"));
+  Pose X;  // the pose of that join (mapped into Example 2's frame; any pose meets the apex)
+  X.position = {-0.96, -3.71, -2.28};
+  X.quaternion = Eigen::Quaterniond(0.7404495, 0.1163922, 0.6619570, 0.0005776).normalized();
+  const Eigen::Vector3d apex(0, 0, -4), on_eA(-0.90500371231668908, -1.1962308642954385, 0);
+  const PairSolution sol = solve_pair_problem(scene, X, scene.A.find("eA"), scene.B.find("e2"),
+                                              PtcType::EETouch, on_eA, apex);
+  EXPECT_FALSE(sol.converged);
+}
+
 TEST(PtcType, NamesKindsCodimensionsPlanesAndLines) {
   const PtcType all[] = {PtcType::FF, PtcType::FE, PtcType::EF, PtcType::EECross,
                          PtcType::EETouch, PtcType::FV, PtcType::VF, PtcType::EV,
