@@ -104,13 +104,13 @@ TEST(SolvePair, RejectsATypeThatDoesNotJoinTheElements) {
 // Example 2's B: its sphere band f2 and its bottom f3 (x^2 + y^2 - 4z <= 16) are tangent at
 // f3's apex (0, 0, -4), a vertex of f3's mesh, so rim e2's two face gradients are parallel
 // there and the rim has no tangent. An e-e-touch solve started there (a mesh start of the
-// detection, session 38: Example 2 moved by a small rigid motion, joining two witnesses of
-// {(fA2-e1, 2)}) fed non-finite rows to Eigen's JacobiSVD, which read out of bounds and the
-// run died of a segmentation fault. It must refuse instead.
+// detection, session 38: Example 2 moved by a small rigid motion, a join of the mirror-image
+// phase) fed non-finite rows to Eigen's JacobiSVD, which read out of bounds and the run died
+// of a segmentation fault. It must refuse instead.
 TEST(SolvePair, RefusesATouchStartWhereTheRimHasNoTangent) {
   const SceneGeometry scene =
       build_scene_geometry(load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/example2.yaml"));
-  Pose X;  // the pose of that join (mapped into Example 2's frame; any pose meets the apex)
+  Pose X;  // that join's rotation; any pose will do (the rows fail on B's point alone)
   X.position = {-0.96, -3.71, -2.28};
   X.quaternion = Eigen::Quaterniond(0.7404495, 0.1163922, 0.6619570, 0.0005776).normalized();
   const Eigen::Vector3d apex(0, 0, -4), on_eA(-0.90500371231668908, -1.1962308642954385, 0);
