@@ -1,0 +1,57 @@
+// Session 39's replay driver (not built by CMake): from a witness pose, the hypothesis toward a
+// CF, tried as the generator tries it (try_hypothesis: every start, plan and variant), with the
+// outcome and reasons. It includes generator.cc to reach its internal functions. Build from
+// the repository root after a Release build:
+//   g++ -I. -isystem /usr/include/eigen3 -O2 -DNDEBUG -std=c++20 \
+//     docs/experiments/replay_hypothesis.cc -o /tmp/replay build/engine/libpcsg_generator.a \
+//     build/engine/libpcsg_contact.a build/engine/libpcsg_geometry.a \
+//     $(ls build/engine/*.a | grep -v -e generator -e contact -e geometry) \
+//     -lfcl -lyaml-cpp -lccd -lpthread
+//   /tmp/replay scenes/example2.yaml X Y Z QW QX QY QZ "{(eA-f2, 1)}" [moved]
+// (the pose X_BA as in graph.json; "moved" maps it by example2_moved.yaml's (R, t) first).
+#include <cstdio>
+
+#include "engine/generator/generator.cc"
+using namespace pcsg;
+int main(int argc, char** argv) {
+  if (argc < 10) {
+    std::fprintf(stderr, "dbg scene px py pz qw qx qy qz CF [moved]\n");
+    return 2;
+  }
+  SceneSpec spec = load_scene_file(argv[1]);
+  SceneGeometry scene = build_scene_geometry(spec);
+  Pose p;
+  p.position = {atof(argv[2]), atof(argv[3]), atof(argv[4])};
+  p.quaternion =
+      Eigen::Quaterniond(atof(argv[5]), atof(argv[6]), atof(argv[7]), atof(argv[8])).normalized();
+  if (argc > 10 && std::string(argv[10]) == "moved") {
+    Eigen::Matrix3d R;
+    R << 0.6, -0.224, 0.768, 0.8, 0.168, -0.576, 0, 0.96, 0.28;
+    Eigen::Vector3d t(0.5, -0.25, 0.125);
+    p.position = R * p.position + t;
+    p.quaternion = (Eigen::Quaterniond(R) * p.quaternion).normalized();
+    if (p.quaternion.w() < 0) p.quaternion.coeffs() *= -1;
+  }
+  ContactReport rep = detect_contacts(scene, p);
+  std::printf("pose %.9f %.9f %.9f  %.9f %.9f %.9f %.9f penetrating %d\n", p.position.x(),
+              p.position.y(), p.position.z(), p.quaternion.w(), p.quaternion.x(), p.quaternion.y(),
+              p.quaternion.z(), (int)rep.penetrating());
+  ContactFormation cf = ContactFormation::of(rep.contacts);
+  std::printf("CF %s\n", cf.str(scene).c_str());
+  ContactFormation want = ContactFormation::parse(argv[9], scene);
+  State s;
+  s.id = 0;
+  s.cf = cf;
+  s.pose = p;
+  s.contacts = rep.contacts;
+  for (const Hypothesis& h : hypothesise_ln(scene, rep.contacts)) {
+    if (!(h.cf == want)) continue;
+    std::printf("hypothesis %s: %zu plans\n", h.cf.str(scene).c_str(), h.plan_options.size());
+    TryResult r = try_hypothesis(scene, s, h, false);
+    for (auto& t : r.targets)
+      std::printf("  feasible %d motion %s run %d/%d/%d attempts %d\n  reason: %s\n",
+                  (int)t.candidate.feasible, t.candidate.motion.c_str(), t.candidate.run.start,
+                  t.candidate.run.plan, t.candidate.run.variant, t.candidate.attempts,
+                  t.candidate.reason.c_str());
+  }
+}
