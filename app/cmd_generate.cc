@@ -31,6 +31,7 @@ struct Args {
   bool quiet = false;
   bool no_project_upward = false;
   bool no_mirror_images = false;
+  bool complete = false;
 };
 
 void run(const Args& a) {
@@ -41,6 +42,7 @@ void run(const Args& a) {
   opt.threads = a.threads;
   opt.project_upward = !a.no_project_upward;
   opt.mirror_images = !a.no_mirror_images;
+  opt.complete_search = a.complete;
   ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
   progress.finish();
@@ -90,6 +92,11 @@ void setup(CLI::App& cli) {
   cmd->add_flag("--no-mirror-images", args->no_mirror_images,
                 "Leave out the mirror images of the states that no state's region holds "
                 "(GeneratorOptions::mirror_images)");
+  cmd->add_flag("--complete", args->complete,
+                "Where the default motions reach no target, try every kind of plan, settling "
+                "wherever the new region ends and the normal drive off an edge "
+                "(GeneratorOptions::complete_search): Example 2 grows 33 CFs instead of 29, "
+                "at about 2.7 times the collision queries");
   cmd->callback([args] { run(*args); });
 }
 

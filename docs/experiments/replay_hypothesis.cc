@@ -7,8 +7,10 @@
 //     build/engine/libpcsg_contact.a build/engine/libpcsg_geometry.a \
 //     $(ls build/engine/*.a | grep -v -e generator -e contact -e geometry) \
 //     -lfcl -lyaml-cpp -lccd -lpthread
-//   /tmp/replay scenes/example2.yaml X Y Z QW QX QY QZ "{(eA-f2, 1)}" [moved]
-// (the pose X_BA as in graph.json; "moved" maps it by example2_moved.yaml's (R, t) first).
+//   /tmp/replay scenes/example2.yaml X Y Z QW QX QY QZ "{(eA-f2, 1)}" [moved|moved1]
+// (the pose X_BA as in graph.json; "moved" maps it by example2_moved.yaml's (R, t) first;
+// "moved1" moves B as generate_moved.cc does, the pose given in the moved frame). Every run
+// is then listed as try_hypothesis would try it.
 #include <cstdio>
 
 #include "engine/generator/generator.cc"
@@ -19,6 +21,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   SceneSpec spec = load_scene_file(argv[1]);
+  if (argc > 10 && std::string(argv[10]) == "moved1") {  // generate_moved.cc's motion of B
+    Pose X;
+    X.position = {3.0, -2.0, 5.0};
+    X.quaternion =
+        Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 2).normalized()));
+    spec = moved_scene(spec, X);
+  }
   SceneGeometry scene = build_scene_geometry(spec);
   Pose p;
   p.position = {atof(argv[2]), atof(argv[3]), atof(argv[4])};
@@ -48,6 +57,27 @@ int main(int argc, char** argv) {
     if (!(h.cf == want)) continue;
     std::printf("hypothesis %s: %zu plans\n", h.cf.str(scene).c_str(), h.plan_options.size());
     TryResult r = try_hypothesis(scene, s, h, false);
+    // Every run, as try_hypothesis would try it (without its early stops).
+    MotionStarts starts(scene, s, h);
+    const std::vector<MotionVariant> variants = motion_variants();
+    MotionCounters counters;
+    for (size_t k = 0; k < starts.size(); ++k) {
+      const MotionStart& start = starts.at(k, counters);
+      if (!start.ok) continue;
+      for (size_t pl = 0; pl < h.plan_options.size(); ++pl)
+        for (size_t v = 0; v < variants.size(); ++v) {
+          if (!variant_matters(variants[v], h.plan_options[pl], start.contacts)) continue;
+          MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts,
+                                                  h.plan_options[pl], h.cf, variants[v], counters);
+          std::printf("  run %zu/%zu/%zu %s%s: feasible %d general %d steps %d %s\n", k, pl, v,
+                      start.prefix.c_str(), o.motion.c_str(), (int)o.feasible,
+                      (int)o.general_settling, o.steps, o.reason.c_str());
+          if (o.feasible)
+            std::printf("    end %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", o.end.position.x(),
+                        o.end.position.y(), o.end.position.z(), o.end.quaternion.w(),
+                        o.end.quaternion.x(), o.end.quaternion.y(), o.end.quaternion.z());
+        }
+    }
     for (auto& t : r.targets)
       std::printf("  feasible %d motion %s run %d/%d/%d attempts %d\n  reason: %s\n",
                   (int)t.candidate.feasible, t.candidate.motion.c_str(), t.candidate.run.start,

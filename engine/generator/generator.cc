@@ -27,15 +27,46 @@ using RegionSignatures = std::vector<RegionSignature>;
 
 std::vector<MotionVariant> motion_variants() {
   return {
-      {true, 0.0, false},         // slidingA / slidingB, least-norm separation
-      {true, 0.0, true},          // the same with separation by rotation
-      {false, 0.0, false},        // combined sliding
-      {false, M_PI / 4, false},   // combined, other paths on the face
+      // The default search's, settling only where the settling contact turns:
+      {true, 0.0, false},        // slidingA / slidingB, least-norm separation
+      {true, 0.0, true},         // the same with separation by rotation
+      {false, 0.0, false},       // combined sliding
+      {false, M_PI / 4, false},  // combined, other paths on the face
       {false, -M_PI / 4, false},
+      // GeneratorOptions::complete_search's too: the same settling wherever the new region ends
+      // within a step (MotionVariant::general_settling); then an edge left or settled onto with
+      // the normal turned straight toward the goal's cone (MotionVariant::normal_drive).
+      {true, 0.0, false, false, true},
+      {true, 0.0, true, false, true},
+      {false, 0.0, false, false, true},
+      {false, M_PI / 4, false, false, true},
+      {false, -M_PI / 4, false, false, true},
+      {true, 0.0, false, true, true},
+      {false, 0.0, false, true, true},
   };
 }
 
 namespace {
+
+// The plans of a hypothesis the default search tries, and the variants (motion_variants()
+// lists them first).
+constexpr size_t kFirstPlans = 2;
+constexpr size_t kFirstVariants = 5;
+
+// The variant that moves as v does with the other settling rule (v itself for the normal
+// drive, which has the general rule only).
+size_t settling_counterpart(const std::vector<MotionVariant>& variants, size_t v) {
+  const MotionVariant& b = variants[v];
+  if (b.normal_drive) return v;
+  for (size_t j = 0; j < variants.size(); ++j) {
+    const MotionVariant& a = variants[j];
+    if (a.general_settling != b.general_settling && !a.normal_drive &&
+        a.fix_unchanged_side == b.fix_unchanged_side && a.turn == b.turn &&
+        a.remove_by_rotation == b.remove_by_rotation)
+      return j;
+  }
+  return v;
+}
 
 // Whether `upper` is `lower` plus exactly one PtC: then `lower` is reached from `upper` by
 // removing that contact, the reverse of the motion that met it (an LN transition down).
@@ -66,22 +97,26 @@ struct TryResult {
 };
 
 // Whether a variant differs from an earlier one for this plan (turns only matter when a contact
-// slides toward a lower-dimensional element; the separation style only with removals).
-bool variant_matters(const MotionVariant& v, const std::vector<ContactPlan>& plan) {
-  bool approach = false, removes = false;
-  for (const ContactPlan& p : plan) {
+// slides toward a lower-dimensional element; the separation style only with removals; the
+// normal drive only when a contact changes from or onto an edge).
+bool variant_matters(const MotionVariant& v, const std::vector<ContactPlan>& plan,
+                     const std::vector<PointContact>& contacts) {
+  bool approach = false, removes = false, edge = false;
+  for (size_t i = 0; i < plan.size(); ++i) {
+    const ContactPlan& p = plan[i];
     if (p.action == ContactAction::Remove) removes = true;
-    if (p.action == ContactAction::Change) approach = true;
+    if (p.action != ContactAction::Change) continue;
+    approach = true;
+    const ElementId from = p.changes_a ? contacts[i].a : contacts[i].b;
+    const ElementId to = p.changes_a ? p.new_a : p.new_b;
+    if (from.kind == ElementKind::Edge || to.kind == ElementKind::Edge) edge = true;
   }
+  if (v.normal_drive && !edge) return false;
   if (v.turn != 0 && !approach) return false;
   if (v.remove_by_rotation && !removes) return false;
   if (!v.fix_unchanged_side && !approach) return false;
   return true;
 }
-
-// Plans that differ only by which of several identical contacts changes are the same up to
-// that choice; trying two of them covers asymmetric situations without trying all.
-constexpr size_t kMaxPlansPerHypothesis = 2;
 
 // The region signatures a plan may arrive with: a kept e-e-cross contact keeps its crossing
 // sign (no CF-compliant motion changes it, state_identity.h); a contact changed into an
@@ -116,7 +151,7 @@ RegionSignatures plan_signatures(const std::vector<PointContact>& contacts,
 // The signatures of every plan tried for `h` from `contacts`, sorted and without repeats.
 RegionSignatures target_signatures(const std::vector<PointContact>& contacts, const Hypothesis& h) {
   RegionSignatures out;
-  const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+  const size_t plans = h.plan_options.size();
   for (size_t p = 0; p < plans; ++p)
     for (RegionSignature& sig : plan_signatures(contacts, h.plan_options[p]))
       out.push_back(std::move(sig));
@@ -159,14 +194,20 @@ class MotionStarts {
   MotionStarts(const SceneGeometry& scene, const State& s, const Hypothesis& h)
       : scene_(scene), s_(s) {
     turns_.push_back({-1, 0, ""});
-    const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
-    for (size_t i = 0; i < s.contacts.size(); ++i)
-      for (size_t p = 0; p < plans; ++p) {
-        const ContactPlan& cp = h.plan_options[p][i];
-        if (cp.action != ContactAction::Change || cp.new_type != PtcType::EECross) continue;
-        add_turns(static_cast<int>(i), cp);
-        break;
-      }
+    // The first two plans' turns first, then (GeneratorOptions::complete_search) the other
+    // plans' for the contacts those left without: a start keeps its index whichever plans the
+    // search tries (replay_candidate).
+    const size_t plans = h.plan_options.size();
+    std::vector<bool> turned(s.contacts.size(), false);
+    for (const auto& [first, last] :
+         {std::pair{size_t{0}, std::min(plans, kFirstPlans)}, std::pair{kFirstPlans, plans}})
+      for (size_t i = 0; i < s.contacts.size(); ++i)
+        for (size_t p = first; p < last && !turned[i]; ++p) {
+          const ContactPlan& cp = h.plan_options[p][i];
+          if (cp.action != ContactAction::Change || cp.new_type != PtcType::EECross) continue;
+          add_turns(static_cast<int>(i), cp);
+          turned[i] = true;
+        }
     starts_.resize(turns_.size());
   }
   size_t size() const { return turns_.size(); }
@@ -232,11 +273,11 @@ class MotionStarts {
 // arrived with another signature, that start's remaining variants are left for the next start
 // (they slide the same way and would arrive alike).
 TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypothesis& h,
-                         bool measure, const RegionSignatures* wanted = nullptr) {
+                         bool measure, bool complete, const RegionSignatures* wanted = nullptr) {
   TryResult r;
   r.counters.measure = measure;
   r.wanted = wanted ? *wanted : target_signatures(s.contacts, h);
-  const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+  const size_t plans = h.plan_options.size();
   std::vector<RegionSignatures> plan_sigs;
   for (size_t p = 0; p < plans; ++p)
     plan_sigs.push_back(plan_signatures(s.contacts, h.plan_options[p]));
@@ -260,47 +301,71 @@ TryResult try_hypothesis(const SceneGeometry& scene, const State& s, const Hypot
       reasons += why;
     };
     bool done = false;
-    for (size_t k = 0; k < starts.size() && !done; ++k) {
-      const MotionStart& start = starts.at(k, r.counters);
-      if (!start.ok) {
-        note("turn about the normal: not CF-compliant from this witness");
-        continue;
-      }
-      bool other_side = false;
-      for (size_t p = 0; p < plans && !done && !other_side; ++p) {
-        if (std::find(plan_sigs[p].begin(), plan_sigs[p].end(), sig) == plan_sigs[p].end())
+    // The default search: the first two plans with the first five variants, whose settling
+    // stops only where the settling contact turns. With `complete`, where that reaches no
+    // target: every plan with the general settling rule and the normal drive, and the other
+    // plans with the narrow rule again where their general run stopped where it would not
+    // have (MotionOutcome::general_stop). A first-pass arrival keeps the witness the default
+    // search gives, which other states' motions depend on (the torus's {(fA-e2, 2),
+    // (fA-f2, 1)} is met only from the {(fA-e2, 2)} witness it gives, and Example 1 with B
+    // moved joins only its arrivals); the second pass adds what it misses (Example 2's
+    // {(fA1-e1, 2), (fA1-f1, 1)} in every frame, and three more CFs).
+    for (int pass = 0; pass < (complete ? 2 : 1) && !done; ++pass)
+      for (size_t k = 0; k < starts.size() && !done; ++k) {
+        const MotionStart& start = starts.at(k, r.counters);
+        if (!start.ok) {
+          if (pass == 0) note("turn about the normal: not CF-compliant from this witness");
           continue;
-        for (size_t v = 0; v < variants.size() && !done && !other_side; ++v) {
-          if (!variant_matters(variants[v], h.plan_options[p])) continue;
-          ++c.attempts;
-          auto it = runs.find({k, p, v});
-          if (it == runs.end()) {
-            MotionOutcome o =
-                run_transition_motion(scene, start.pose, start.contacts, h.plan_options[p], h.cf,
-                                      variants[v], r.counters);
-            o.motion = start.prefix + o.motion;
-            if (o.discovered) r.discovered.push_back(*o.discovered);
-            it = runs.emplace(std::make_tuple(k, p, v), std::move(o)).first;
-          }
-          const MotionOutcome& o = it->second;
-          c.motion = o.motion;
-          c.steps = o.steps;
-          c.run = {static_cast<int>(k), static_cast<int>(p), static_cast<int>(v)};
-          if (reaches_target(scene, c, o)) {  // c.crossing is sig's text
-            c.feasible = true;
-            out.outcome = o;
-            done = true;
-          } else if (o.feasible) {
-            note(o.motion + ": arrives with the crossing " +
-                 signature_text(scene, region_signature(o.contacts)));
-            other_side = true;
-          } else {
-            note(o.motion + ": " + o.reason);
-            out.outcome = o;
+        }
+        bool other_side = false;
+        for (size_t p = 0; p < plans && !done && !other_side; ++p) {
+          if (std::find(plan_sigs[p].begin(), plan_sigs[p].end(), sig) == plan_sigs[p].end())
+            continue;
+          if (pass == 0 && p >= kFirstPlans) break;
+          for (size_t i = 0; i < variants.size() && !done && !other_side; ++i) {
+            // pass 0: the first variants; pass 1: the general-settling ones, then the first
+            // ones again (other plans)
+            const size_t n = variants.size();
+            const size_t v = pass == 0 ? i : (kFirstVariants + i) % n;
+            if (pass == 0 && v >= kFirstVariants) break;
+            if (!variant_matters(variants[v], h.plan_options[p], start.contacts)) continue;
+            // the same motion as one run already, where the other settling rule changes nothing
+            const auto same = runs.find({k, p, settling_counterpart(variants, v)});
+            if (pass == 1 && same != runs.end() && !same->second.general_stop) continue;
+            if (pass == 1 && v < kFirstVariants) {
+              if (p < kFirstPlans) continue;  // tried in pass 0
+              // after its general run stopped where this one would not, and failed
+              if (same == runs.end() || same->second.feasible) continue;
+            }
+            ++c.attempts;
+            auto it = runs.find({k, p, v});
+            if (it == runs.end()) {
+              MotionOutcome o =
+                  run_transition_motion(scene, start.pose, start.contacts, h.plan_options[p], h.cf,
+                                        variants[v], r.counters);
+              o.motion = start.prefix + o.motion;
+              if (o.discovered) r.discovered.push_back(*o.discovered);
+              it = runs.emplace(std::make_tuple(k, p, v), std::move(o)).first;
+            }
+            const MotionOutcome& o = it->second;
+            c.motion = o.motion;
+            c.steps = o.steps;
+            c.run = {static_cast<int>(k), static_cast<int>(p), static_cast<int>(v)};
+            if (reaches_target(scene, c, o)) {  // c.crossing is sig's text
+              c.feasible = true;
+              out.outcome = o;
+              done = true;
+            } else if (o.feasible) {
+              note(o.motion + ": arrives with the crossing " +
+                   signature_text(scene, region_signature(o.contacts)));
+              other_side = true;
+            } else {
+              note(o.motion + ": " + o.reason);
+              out.outcome = o;
+            }
           }
         }
       }
-    }
     if (!c.feasible) c.reason = reasons;
     if (lone)
       c.reason = "no configuration has this CF: " + element_pair_name(scene, lone->a, lone->b) +
@@ -445,6 +510,15 @@ class Builder {
   // between the states the images of its ends join (the turned or reflected motion is a proof:
   // the same motion under the other labelling, or the whole scene reflected).
   void add_relabelled_links();
+  // The state holding `d`, the image of state id's witness under a symmetry, or nullopt's -1.
+  // An image no state's region joins is added as a state of its own: the image of a region
+  // is a region, and its links are the images of id's (session 38: in Example 2 the image of
+  // a {(fA2-e1, 2)} state joined none of the three {(fA1-e1, 2)} states, and the image of its
+  // link to {(eA-e1, 1), (fA2-f1, 1)} was missing).
+  int image_state(int id, const std::optional<Discovery>& d);
+  // The LN hypotheses of a state with these contacts, with the plans the search tries: the
+  // first two of each, or every kind with GeneratorOptions::complete_search.
+  std::vector<Hypothesis> hypotheses(const std::vector<PointContact>& contacts) const;
   // The mirror image of state `id`'s witness (symmetry.h, mirrored: by the first mirror plane
   // of each solid), re-detected exactly; nullopt when a solid has no mirror plane or the image
   // does not touch as the state does. A configuration and its image may lie in different
@@ -867,7 +941,7 @@ void Builder::grow(int seed_id) {
     // Every hypothesis of every state on this level, in a fixed order.
     std::vector<std::pair<int, Hypothesis>> jobs;
     for (int id : frontier)
-      for (Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts))
+      for (Hypothesis& h : hypotheses(graph_.states[id].contacts))
         jobs.emplace_back(id, std::move(h));
     // And the upward probes of each state: toward every element of B it does not touch.
     std::vector<Probe> probes;
@@ -908,7 +982,7 @@ void Builder::grow(int seed_id) {
         [&](size_t j) {
           if (j < jobs.size()) {
             results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
-                                        options_.measure_discretisation);
+                                        options_.measure_discretisation, options_.complete_search);
             for (const Reached& t : results[j].targets)
               ahead[j].push_back(t.candidate.feasible ? joins_ahead(t.candidate.cf, t.outcome.end,
                                                                     t.outcome.contacts)
@@ -1083,6 +1157,25 @@ bool Builder::add_relabelled_states() {
   return added;
 }
 
+std::vector<Hypothesis> Builder::hypotheses(const std::vector<PointContact>& contacts) const {
+  std::vector<Hypothesis> hs = hypothesise_ln(scene_, contacts, options_.complete_search);
+  if (!options_.complete_search)
+    for (Hypothesis& h : hs)
+      if (h.plan_options.size() > kFirstPlans) h.plan_options.resize(kFirstPlans);
+  return hs;
+}
+
+int Builder::image_state(int id, const std::optional<Discovery>& d) {
+  if (!d) return -1;
+  const int found = find_state(d->cf, d->pose, d->contacts);
+  // With the complete search an image that joins no state is one (so every link's image is a
+  // link); otherwise it is left out, with its links.
+  if (found >= 0 || !options_.complete_search ||
+      static_cast<int>(graph_.states.size()) >= options_.max_states)
+    return found;
+  return add_state(d->cf, d->pose, d->contacts, false, graph_.states[id].depth);
+}
+
 void Builder::add_relabelled_links() {
   const bool relabelling = !symmetry_.relabelling_A.empty() || !symmetry_.relabelling_B.empty();
   const bool mirror =
@@ -1095,12 +1188,12 @@ void Builder::add_relabelled_links() {
     {
       PhaseScope phase(*this, Phase::Relabelling);
       for (std::optional<Discovery>& d : relabelled_images(id))
-        image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+        image[id].push_back(image_state(id, d));
     }
     if (mirror) {
       PhaseScope phase(*this, Phase::Mirror);
       const std::optional<Discovery> d = mirror_image(id);
-      image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+      image[id].push_back(image_state(id, d));
     }
   }
   if (cancelled()) return;
@@ -1224,7 +1317,7 @@ void Builder::retry_from_other_witnesses() {
         State from = graph_.states[id];
         from.pose = members_[id][k].pose;
         from.contacts = members_[id][k].contacts;
-        for (const Hypothesis& h : hypothesise_ln(scene_, from.contacts)) {
+        for (const Hypothesis& h : hypotheses(from.contacts)) {
           if (!retried_.insert({static_cast<int>(id), static_cast<int>(k), h.cf}).second)
             continue;
           const RegionSignatures wanted = missing_signatures(from.contacts, h);
@@ -1232,10 +1325,10 @@ void Builder::retry_from_other_witnesses() {
           if (static_cast<int>(graph_.states.size()) >= options_.max_states) return;
           // A motion run ahead for other wanted signatures is not the one the walk would run.
           const auto found = ahead.find({static_cast<int>(id), static_cast<int>(k), h.cf});
-          TryResult r =
-              found != ahead.end() && found->second.wanted == wanted
-                  ? std::move(found->second)
-                  : try_hypothesis(scene_, from, h, options_.measure_discretisation, &wanted);
+          TryResult r = found != ahead.end() && found->second.wanted == wanted
+                            ? std::move(found->second)
+                            : try_hypothesis(scene_, from, h, options_.measure_discretisation,
+                                             options_.complete_search, &wanted);
           counters_.merge(r.counters);
           for (Discovery& d : r.discovered)
             if (adds_one_contact(from.cf, d.cf)) discoveries_.push_back({from.id, std::move(d)});
@@ -1270,7 +1363,7 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
   std::set<std::tuple<int, int, ContactFormation>> listed;
   for (size_t id = 0; id < graph_.states.size(); ++id)
     for (size_t k = 1; k < members_[id].size(); ++k)
-      for (Hypothesis& h : hypothesise_ln(scene_, members_[id][k].contacts)) {
+      for (Hypothesis& h : hypotheses(members_[id][k].contacts)) {
         const std::tuple<int, int, ContactFormation> key{static_cast<int>(id),
                                                          static_cast<int>(k), h.cf};
         if (retried_.count(key) || !listed.insert(key).second) continue;
@@ -1289,7 +1382,7 @@ std::map<std::tuple<int, int, ContactFormation>, TryResult> Builder::try_retries
         from.pose = members_[jobs[j].id][jobs[j].k].pose;
         from.contacts = members_[jobs[j].id][jobs[j].k].contacts;
         results[j] = try_hypothesis(scene_, from, jobs[j].h, options_.measure_discretisation,
-                                    &jobs[j].wanted);
+                                    options_.complete_search, &jobs[j].wanted);
       },
       [&](size_t finished) {
         report_phase(Phase::Retries, "motions run ahead", static_cast<int>(finished),
@@ -1358,7 +1451,7 @@ void Builder::retry_missing_links() {
   std::vector<Group> groups;
   std::vector<Attempt> attempts;
   for (int id = 0; id < n; ++id)
-    for (const Hypothesis& h : hypothesise_ln(scene_, graph_.states[id].contacts)) {
+    for (const Hypothesis& h : hypotheses(graph_.states[id].contacts)) {
       Group g{id, h.cf, {}, members_[id].size()};
       for (const State& t : graph_.states)
         if (t.cf == h.cf) g.targets.push_back(t.id);
@@ -1377,9 +1470,10 @@ void Builder::retry_missing_links() {
     start.pose = from.pose;
     start.contacts = from.contacts;
     // the plans index the start's own contacts
-    for (const Hypothesis& hw : hypothesise_ln(scene_, start.contacts)) {
+    for (const Hypothesis& hw : hypotheses(start.contacts)) {
       if (!(hw.cf == g.cf)) continue;
-      TryResult r = try_hypothesis(scene_, start, hw, options_.measure_discretisation);
+      TryResult r = try_hypothesis(scene_, start, hw, options_.measure_discretisation,
+                                   options_.complete_search);
       counters.merge(r.counters);
       return std::optional<TryResult>(std::move(r));
     }
@@ -1610,9 +1704,10 @@ MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
   MotionOutcome last;
   const std::vector<MotionVariant> variants = motion_variants();
   const Candidate::Run& run = candidate.run;
-  for (const Hypothesis& h : hypothesise_ln(scene, from.contacts)) {
+  // every kind of plan (GeneratorOptions::complete_search): the first two are the same
+  for (const Hypothesis& h : hypothesise_ln(scene, from.contacts, true)) {
     if (!(h.cf == candidate.cf)) continue;
-    const size_t plans = std::min(h.plan_options.size(), kMaxPlansPerHypothesis);
+    const size_t plans = h.plan_options.size();
     MotionStarts starts(scene, from, h);
     auto replay = [&](const MotionStart& start, size_t p, size_t v) {
       MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts, h.plan_options[p],
@@ -1636,7 +1731,7 @@ MotionOutcome replay_candidate(const SceneGeometry& scene, const State& state,
       if (!start.ok) continue;
       for (size_t p = 0; p < plans; ++p)
         for (size_t v = 0; v < variants.size(); ++v) {
-          if (!variant_matters(variants[v], h.plan_options[p])) continue;
+          if (!variant_matters(variants[v], h.plan_options[p], start.contacts)) continue;
           MotionOutcome dry = run_transition_motion(scene, start.pose, start.contacts,
                                                     h.plan_options[p], h.cf, variants[v], counters);
           if (start.prefix + dry.motion == candidate.motion) return replay(start, p, v);

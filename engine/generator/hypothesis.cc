@@ -1,6 +1,8 @@
 #include "engine/generator/hypothesis.h"
 
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace pcsg {
 
@@ -62,16 +64,45 @@ void enumerate(const SceneGeometry& scene, const std::vector<PointContact>& cont
   }
 }
 
+// Plans that differ only by which of several identical contacts (one pair, one type) does
+// what are alike: two of each kind are kept, which covers asymmetric situations without
+// trying every permutation, and every kind is. (The first two plans of a hypothesis alone,
+// whatever their kinds, never try from Example 1's {(fA-e1, 2), (fA-f1, 1)} the plans toward
+// {(fA-f1, 2)} that change both rim contacts and lift off the dish, and toward {(fA-f1, 1)}
+// that lift off both rims.) The filter keeps the order, so the first two plans stay first.
+void keep_two_plans_of_each_kind(const std::vector<PointContact>& contacts, Hypothesis& h) {
+  using Part = std::tuple<ElementId, ElementId, PtcType, ContactAction, ElementId, ElementId, int>;
+  std::map<std::vector<Part>, int> kinds;
+  std::vector<std::vector<ContactPlan>> kept;
+  for (std::vector<ContactPlan>& plan : h.plan_options) {
+    std::vector<Part> kind;
+    for (size_t i = 0; i < plan.size(); ++i) {
+      const ContactPlan& p = plan[i];
+      const bool change = p.action == ContactAction::Change;
+      kind.emplace_back(contacts[i].a, contacts[i].b, contacts[i].type, p.action,
+                        change ? p.new_a : ElementId{}, change ? p.new_b : ElementId{},
+                        change ? static_cast<int>(p.new_type) : -1);
+    }
+    std::sort(kind.begin(), kind.end());
+    if (++kinds[kind] <= 2) kept.push_back(std::move(plan));
+  }
+  h.plan_options = std::move(kept);
+}
+
 }  // namespace
 
 std::vector<Hypothesis> hypothesise_ln(const SceneGeometry& scene,
-                                       const std::vector<PointContact>& contacts) {
+                                       const std::vector<PointContact>& contacts,
+                                       bool every_kind_of_plan) {
   std::map<ContactFormation, Hypothesis> by_cf;
   enumerate(scene, contacts, by_cf);
   const ContactFormation own = ContactFormation::of(contacts);
   std::vector<Hypothesis> out;
-  for (auto& [cf, h] : by_cf)
-    if (!(cf == own)) out.push_back(std::move(h));
+  for (auto& [cf, h] : by_cf) {
+    if (cf == own) continue;
+    if (every_kind_of_plan) keep_two_plans_of_each_kind(contacts, h);
+    out.push_back(std::move(h));
+  }
   // Higher cardinality first: those keep more contacts and are tried with the most
   // constrained (finite) motions first, as the paper prefers.
   std::stable_sort(out.begin(), out.end(), [](const Hypothesis& x, const Hypothesis& y) {

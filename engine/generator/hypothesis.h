@@ -36,8 +36,13 @@ struct Hypothesis {
 std::vector<PtcCount> neighbouring_ptcs(const SceneGeometry& scene, const PointContact& c);
 
 // All LN hypotheses of a state with the given contacts, deduplicated by CF, in a deterministic
-// order (by cardinality descending, then CF order). The state's own CF is not included.
+// order (by cardinality descending, then CF order). The state's own CF is not included. With
+// `every_kind_of_plan`, each keeps two plans of each kind only (plans that differ only by which
+// of several alike contacts does what are of one kind), in order, so its first two plans stay
+// first (GeneratorOptions::complete_search tries them all; the generator otherwise the first
+// two).
 std::vector<Hypothesis> hypothesise_ln(const SceneGeometry& scene,
-                                       const std::vector<PointContact>& contacts);
+                                       const std::vector<PointContact>& contacts,
+                                       bool every_kind_of_plan = false);
 
 }  // namespace pcsg

@@ -29,6 +29,19 @@ struct MotionVariant {
   double turn = 0;
   // Removal by rotation about the kept contacts (true) or by the least-norm motion (false).
   bool remove_by_rotation = false;
+  // A contact leaving an edge for a face, or settling from a face onto an edge, also turns its
+  // normal straight toward the goal's normal cone beside the rotation about the edge (false:
+  // the rotation about the edge alone). Neither always arrives: the straight turn lifts the
+  // lens off Example 2's dish rim where the rotation alone slides it along (both kept). Only
+  // with general_settling (GeneratorOptions::complete_search).
+  bool normal_drive = false;
+  // Where settling stops within a step (settle_within_step): false, only where the settling
+  // contact itself turns; true, wherever the new region ends within the step (another contact
+  // changing, two contacts of one pair merging, a new contact met), and a contact being removed
+  // is released there once it has separated. The general rule reaches Example 2's
+  // {(fA1-e1, 2), (fA1-f1, 1)} in every frame; it also stops motions that the narrow rule
+  // completes (GeneratorOptions::complete_search tries the narrow rule first).
+  bool general_settling = false;
   std::string name() const;
 };
 
@@ -88,6 +101,10 @@ struct MotionOutcome {
   std::string motion;                  // e.g. "slidingA", "slidingB+rotation", "combined"
   std::string reason;                  // why it failed
   int steps = 0;
+  // With MotionVariant::general_settling: settling stopped where the narrow rule would not
+  // have. Without it: the general rule's conditions held at some step, so it might have
+  // stopped there (when false, the general rule's motion is this one, step for step).
+  bool general_stop = false;
 };
 
 // Tries one motion variant for one plan of a hypothesis from `start` (whose exact contacts are

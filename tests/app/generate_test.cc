@@ -74,6 +74,16 @@ TEST(GenerateCommand, NoMirrorImagesFlagLeavesOutTheOtherHand) {
       0);
 }
 
+// --complete sets GeneratorOptions::complete_search: Example 1 then has the default's 11 states
+// and 64 links instead of 58 (two distinct links more, lifting off both rim contacts at once;
+// generator_test.cc, Generator.CompleteSearchGraphIsIdenticalUnderRigidMotion).
+TEST(GenerateCommand, CompleteFlagTriesEveryKindOfPlan) {
+  const fs::path dir = fresh_dir("complete");
+  const ExeRun r = run_pcsg("generate -q --complete " + example1() + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("11 states, 64 links"), std::string::npos) << r.out;
+}
+
 TEST(GenerateCommand, RejectsAThreadCountOutOfRange) {
   const ExeRun r = run_pcsg("generate " + example1() + " -j 0 -o " + fresh_dir("bad").string(),
                             /*merge_stderr=*/true);

@@ -131,6 +131,29 @@ TEST(TorusGraph, HasTheStatesItsShapeImplies) {
     for (const PtcCount& e : s.cf.entries()) EXPECT_EQ(g.scene.A.element_name(e.a), "fA");
 }
 
+// GeneratorOptions::complete_search tries more where the default motions fail; it must keep
+// what they find. Session 39's first complete-CF patch (the general settling rule alone) lost
+// {(fA-e2, 2), (fA-f2, 1)} here: the {(fA-e2, 2)} witness it reached first was another, from
+// which no upward projection lands on that state. Trying the default motions first keeps every
+// witness they reach. Measured in session 40: the default graph's 14 states, 12 CFs and 32
+// distinct links, and the 4-contact {(fA-e2, 2), (fA-f2, 2)} (the tube across the lower rim
+// and against the sphere band at two points each) with 6 links: 15 states, 80 links.
+TEST(TorusGraph, CompleteSearchKeepsTheDefaultGraph) {
+  const Generated& g = torus();
+  GeneratorOptions opt;
+  opt.complete_search = true;
+  const Generated c = testing::generate(load_scene_file(testing::scene_path("torus.yaml")), opt);
+  const testing::GraphSignature want = testing::signature(g.graph, g.scene);
+  const testing::GraphSignature have = testing::signature(c.graph, c.scene);
+  for (const std::string& cf : want.states)
+    EXPECT_NE(std::find(have.states.begin(), have.states.end(), cf), have.states.end()) << cf;
+  for (const std::string& link : want.links)
+    EXPECT_NE(std::find(have.links.begin(), have.links.end(), link), have.links.end()) << link;
+  EXPECT_GE(c.graph.states.size(), g.graph.states.size());
+  testing::expect_witnesses_valid(c);
+  expect_links_consistent(c);
+}
+
 TEST(TorusGraph, RestsOnTheConvexBottomThroughItsHole) {
   // Coaxially below B, the convex bottom (radius of curvature 2 at its tip) enters the hole
   // (radius 1) and touches the inner tube along a circle; tipped, at two points. A local
