@@ -545,61 +545,50 @@ bool Motion::settle_within_step(const Observation& obs, const TwistFrame& F, con
   // being removed is released there too when it has separated: lifting off may slide two
   // contacts of one pair together within the step (Example 2's {(fA1-e1, 2), (fA1-f1, 1)}).
   if (obs.kind == Observation::Same || obs.kind == Observation::Event || lo <= 0) return false;
+  const auto settling_on_new_pair = [](const Track& t) {
+    return t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
+           t.c.a == t.plan.new_a && t.c.b == t.plan.new_b;
+  };
   const bool turned = obs.kind == Observation::KeptChanged && obs.track >= 0 &&
-                      tracks_[obs.track].plan.action == ContactAction::Change &&
-                      tracks_[obs.track].phase == Phase::Settle &&
-                      tracks_[obs.track].c.a == tracks_[obs.track].plan.new_a &&
-                      tracks_[obs.track].c.b == tracks_[obs.track].plan.new_b;
+                      settling_on_new_pair(tracks_[obs.track]);
+  // The general rule's conditions. Not before an e-e-cross contact is lost (on the two lenses
+  // of collinear_edges.yaml, at the rims' touch): the crossing region's sliver there is as thin
+  // as the step's part before the loss, and a witness in it is ill-conditioned near a touch
+  // (the crossing's gap is good to the solve's residual over the rims' sine: 8e-10 L at 5.6e-6
+  // from the touch, measured); the motion fails there and another variant arrives farther in.
+  // Not before the event a driving contact is headed for. Only while a contact settles or is
+  // being removed.
+  bool settling = false, removing = false;
+  for (const Track& t : tracks_) {
+    settling = settling || settling_on_new_pair(t);
+    removing = removing || (t.plan.action == ContactAction::Remove && t.phase != Phase::Done);
+  }
+  const bool general =
+      !(obs.kind == Observation::Missing && obs.track >= 0 &&
+        tracks_[obs.track].c.type == PtcType::EECross) &&
+      !(obs.track >= 0 && tracks_[obs.track].plan.action == ContactAction::Change &&
+        tracks_[obs.track].phase == Phase::Drive) &&
+      (settling || removing);
+  // The narrow rule stops only where the settling contact turns; there the general rule would
+  // also release and end every settling contact, so either may move differently from here.
   if (!variant_.general_settling) {
-    if (!turned) {
-      // Whether the general rule could stop here (its conditions below, before its motion).
-      if (!(obs.kind == Observation::Missing && obs.track >= 0 &&
-            tracks_[obs.track].c.type == PtcType::EECross) &&
-          !(obs.track >= 0 && tracks_[obs.track].plan.action == ContactAction::Change &&
-            tracks_[obs.track].phase == Phase::Drive))
-        for (const Track& t : tracks_)
-          if ((t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
-               t.c.a == t.plan.new_a && t.c.b == t.plan.new_b) ||
-              (t.plan.action == ContactAction::Remove && t.phase != Phase::Done))
-            general_stop_ = true;
-      return false;
-    }
-    general_stop_ = true;  // (the general rule also releases and ends every settling contact)
-    std::vector<Track> tm = tracks_;
-    const std::optional<Pose> Ym = correct(F.apply(X_, s * (0.5 * lo)), tm);
-    if (!Ym) return false;
-    const Observation om = classify(*Ym, tm);
-    if (om.kind != Observation::Same) return false;
+    general_stop_ = general_stop_ || general || turned;
+    if (!turned) return false;
+  } else if (!general) {
+    return false;
+  }
+  std::vector<Track> tm = tracks_;
+  const std::optional<Pose> Ym = correct(F.apply(X_, s * (0.5 * lo)), tm);
+  if (!Ym) return false;
+  const Observation om = classify(*Ym, tm);
+  if (om.kind != Observation::Same) return false;
+  if (!variant_.general_settling) {
     X_ = *Ym;
     tracks_ = tm;
     tracks_[obs.track].phase = Phase::Done;
     emit("settle", om.contacts);
     return true;
   }
-  // Not before an e-e-cross contact is lost (on the two lenses of collinear_edges.yaml, at the
-  // rims' touch): the crossing region's sliver there is as thin as the step's part before the
-  // loss, and a witness in it is ill-conditioned near a touch (the crossing's gap is good to the
-  // solve's residual over the rims' sine: 8e-10 L at 5.6e-6 from the touch, measured). The
-  // motion fails there as it did before session 39; another variant arrives farther in.
-  if (obs.kind == Observation::Missing && obs.track >= 0 &&
-      tracks_[obs.track].c.type == PtcType::EECross)
-    return false;
-  if (obs.track >= 0 && tracks_[obs.track].plan.action == ContactAction::Change &&
-      tracks_[obs.track].phase == Phase::Drive)
-    return false;
-  bool settling = false, removing = false;
-  for (const Track& t : tracks_) {
-    if (t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
-        t.c.a == t.plan.new_a && t.c.b == t.plan.new_b)
-      settling = true;
-    if (t.plan.action == ContactAction::Remove && t.phase != Phase::Done) removing = true;
-  }
-  if (!settling && !removing) return false;
-  std::vector<Track> tm = tracks_;
-  const std::optional<Pose> Ym = correct(F.apply(X_, s * (0.5 * lo)), tm);
-  if (!Ym) return false;
-  const Observation om = classify(*Ym, tm);
-  if (om.kind != Observation::Same) return false;
   std::vector<bool> released(tm.size(), false);
   bool any_released = false;
   for (size_t i = 0; i < tm.size(); ++i) {
@@ -616,13 +605,8 @@ bool Motion::settle_within_step(const Observation& obs, const TwistFrame& F, con
   if (!turned) general_stop_ = true;
   X_ = *Ym;
   tracks_ = tm;
-  for (size_t i = 0; i < tracks_.size(); ++i) {
-    Track& t = tracks_[i];
-    if ((t.plan.action == ContactAction::Change && t.phase == Phase::Settle &&
-         t.c.a == t.plan.new_a && t.c.b == t.plan.new_b) ||
-        released[i])
-      t.phase = Phase::Done;
-  }
+  for (size_t i = 0; i < tracks_.size(); ++i)
+    if (settling_on_new_pair(tracks_[i]) || released[i]) tracks_[i].phase = Phase::Done;
   emit("settle", om.contacts);
   return true;
 }
