@@ -36,6 +36,16 @@ Generated generate(const SceneSpec& spec, int threads = 1) {
   return g;
 }
 
+SceneSpec example1_spec() { return load_scene_file(testing::scene_path("example1.yaml")); }
+
+// Example 1 on one thread, generated once per process: the tests that read it run in one
+// process (tests/CMakeLists.txt, the Example 1 group), so the suite pays one generation
+// instead of one per test.
+const Generated& example1() {
+  static const Generated g = generate(example1_spec());
+  return g;
+}
+
 // Every witness, re-checked by the exact contact computation, carries exactly its state's CF
 // and does not penetrate; its contacts are exact.
 void expect_witnesses_valid(const Generated& g) {
@@ -78,7 +88,7 @@ void expect_ruled_out_candidates_sound(const Generated& g) {
 }
 
 TEST(Generator, Example1WitnessesAreExactAndTheSeedHasTwoContacts) {
-  const Generated g = generate(load_scene_file(testing::scene_path("example1.yaml")));
+  const Generated& g = example1();
   ASSERT_FALSE(g.graph.states.empty());
   expect_witnesses_valid(g);
   const State& seed = g.graph.states.front();
@@ -101,7 +111,7 @@ TEST(Generator, Example1WitnessesAreExactAndTheSeedHasTwoContacts) {
 // one's witness (symmetry.h, mirrored) re-detects with the same CF and joins the other, and
 // the handedness of their contacts differs.
 TEST(Generator, Example1HoldsTheEllipsoidAcrossTheDishInBothHands) {
-  const Generated g = generate(load_scene_file(testing::scene_path("example1.yaml")));
+  const Generated& g = example1();
   const std::string cf = "{(fA-e1, 1), (fA-f1, 1)}";
   std::vector<const State*> both;
   for (const State& s : g.graph.states)
@@ -199,8 +209,8 @@ TEST(Generator, Example2HoldsEveryStateFoundSoFar) {
 }
 
 TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  const Generated one = generate(spec, 1), two = generate(spec, 2);
+  const Generated& one = example1();
+  const Generated two = generate(example1_spec(), 2);
   GraphJsonOptions opt;
   opt.include_timing = false;
   EXPECT_EQ(graph_to_json(one.graph, one.scene, opt), graph_to_json(two.graph, two.scene, opt));
@@ -334,14 +344,24 @@ std::vector<SceneSpec> transformed_copies(const SceneSpec& spec) {
   return {scaled_scene(spec, 1e-3), scaled_scene(spec, 1e3), moved_scene(spec, X)};
 }
 
+// Example 1's graph in each of transformed_copies (scaled by 1e-3, by 1e3, B moved), generated
+// once per process for the three tests that compare them with example1().
+const std::vector<Generated>& transformed_example1() {
+  static const std::vector<Generated> g = [] {
+    std::vector<Generated> out;
+    for (const SceneSpec& variant : transformed_copies(example1_spec()))
+      out.push_back(generate(variant));
+    return out;
+  }();
+  return g;
+}
+
 // What holds today under scaling by 1e-3 and 1e3 and a rigid motion of B's frame: the paper's
 // six CFs are all found, and no CF appears that the untransformed scene does not have.
 TEST(Generator, PapersStatesSurviveScalingAndRigidMotion) {
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  const Generated ref = generate(spec);
+  const Generated& ref = example1();
   const GraphSignature want = signature(ref.graph, ref.scene);
-  for (const SceneSpec& variant : transformed_copies(spec)) {
-    const Generated g = generate(variant);
+  for (const Generated& g : transformed_example1()) {
     const GraphSignature got = signature(g.graph, g.scene);
     for (const char* cf : {"{(fA-f1, 2)}", "{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-f2, 1)}",
                            "{(fA-e2, 1)}", "{(fA-f3, 1)}"})
@@ -373,11 +393,10 @@ std::vector<std::string> link_multiset(const Generated& g) {
 }
 
 TEST(Generator, GraphIsIdenticalUnderScaling) {
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  const Generated ref = generate(spec);
-  for (double s : {1e-3, 1e3}) {
-    SCOPED_TRACE("scaled by " + std::to_string(s));
-    const Generated g = generate(scaled_scene(spec, s));
+  const Generated& ref = example1();
+  for (int k : {0, 1}) {  // transformed_copies: scaled by 1e-3, by 1e3
+    SCOPED_TRACE(k ? "scaled by 1e3" : "scaled by 1e-3");
+    const Generated& g = transformed_example1()[k];
     EXPECT_EQ(state_multiset(g), state_multiset(ref))
         << "got:\n" << testing::join(state_multiset(g));
     EXPECT_EQ(link_multiset(g), link_multiset(ref))
@@ -385,24 +404,16 @@ TEST(Generator, GraphIsIdenticalUnderScaling) {
   }
 }
 
-// Example 1 and its copy with B's frame moved (transformed_copies), generated once for the
-// two tests below (~30 s).
-const std::pair<Generated, Generated>& rigidly_moved_example1() {
-  static const std::pair<Generated, Generated> g = [] {
-    const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-    return std::pair<Generated, Generated>{generate(spec), generate(transformed_copies(spec).back())};
-  }();
-  return g;
-}
-
 TEST(Generator, StatesAreIdenticalUnderRigidMotion) {
-  const auto& [ref, g] = rigidly_moved_example1();
+  const Generated& ref = example1();
+  const Generated& g = transformed_example1().back();
   EXPECT_EQ(state_multiset(g), state_multiset(ref))
       << "got:\n" << testing::join(state_multiset(g));
 }
 
 TEST(Generator, LinksAreIdenticalUnderRigidMotion) {
-  const auto& [ref, g] = rigidly_moved_example1();
+  const Generated& ref = example1();
+  const Generated& g = transformed_example1().back();
   EXPECT_EQ(link_multiset(g), link_multiset(ref)) << "got:\n" << testing::join(link_multiset(g));
 }
 
@@ -413,7 +424,7 @@ TEST(Generator, LinksAreIdenticalUnderRigidMotion) {
 // plans do not include). Session 39's first complete-CF patch gave the moved frame two
 // unjoined {(fA-e1, 1), (fA-f1, 1)} more: its general settling reached other witnesses first.
 TEST(Generator, CompleteSearchGraphIsIdenticalUnderRigidMotion) {
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  const SceneSpec spec = example1_spec();
   const auto complete = [](const SceneSpec& sc) {
     Generated g{build_scene_geometry(sc), {}};
     GeneratorOptions opt;
@@ -426,7 +437,7 @@ TEST(Generator, CompleteSearchGraphIsIdenticalUnderRigidMotion) {
   const Generated g = complete(transformed_copies(spec).back());
   EXPECT_EQ(state_multiset(g), state_multiset(ref)) << "got:\n" << testing::join(state_multiset(g));
   EXPECT_EQ(link_multiset(g), link_multiset(ref)) << "got:\n" << testing::join(link_multiset(g));
-  const Generated& plain = rigidly_moved_example1().first;
+  const Generated& plain = example1();
   EXPECT_EQ(state_multiset(ref), state_multiset(plain));
   const GraphSignature more = signature(ref.graph, ref.scene);
   for (const std::string& link : signature(plain.graph, plain.scene).links)
@@ -442,7 +453,7 @@ TEST(Generator, CompleteSearchGraphIsIdenticalUnderRigidMotion) {
 // the projections the graph lacks it. (That every witness is exact, that the graph is the same
 // with one or two threads and with B's frame moved: the tests above, on the default options.)
 TEST(Generator, UpwardProjectionFindsExample1sThreeContactState) {
-  const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
+  const SceneSpec spec = example1_spec();
   const std::string three = "{(fA-e1, 2), (fA-f1, 1)}";
   const auto holding = [&](const Generated& g) {
     return std::count_if(g.graph.states.begin(), g.graph.states.end(),
@@ -451,8 +462,7 @@ TEST(Generator, UpwardProjectionFindsExample1sThreeContactState) {
   GeneratorOptions opt;
   opt.threads = 2;
   ASSERT_TRUE(opt.project_upward) << "on by default";
-  Generated g{build_scene_geometry(spec), {}};
-  g.graph = generate_graph(g.scene, opt);
+  const Generated& g = example1();  // the default options (on one thread: the same graph)
   const auto& phases = g.graph.stats.queries_by_phase;
   const auto upward = std::find_if(phases.begin(), phases.end(),
                                    [](const auto& p) { return p.first == "upward projections"; });

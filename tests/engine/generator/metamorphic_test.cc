@@ -104,6 +104,25 @@ void expect_mirrored(const Generated& original, const Generated& swapped,
   }
 }
 
+// The original graphs of two tests each, generated once per process (tests/CMakeLists.txt runs
+// each pair in one process).
+const Generated& example1() {
+  static const Generated g = generate(load_scene_file(testing::scene_path("example1.yaml")));
+  return g;
+}
+
+SceneSpec two_lenses_spec() {
+  SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
+  spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)
+  spec.seeds.clear();
+  return spec;
+}
+
+const Generated& two_lenses() {
+  static const Generated g = generate(two_lenses_spec());
+  return g;
+}
+
 // A lens (faces fS, fC, edge eA) against a ball: three states, e-f becomes f-e.
 TEST(Metamorphic, SwappingAAndBMirrorsTheLensOnBallGraph) {
   const SceneSpec spec = load_scene_file(testing::stress_path("weak_edge_sine_0.1.yaml"));
@@ -118,10 +137,8 @@ TEST(Metamorphic, SwappingAAndBMirrorsTheLensOnBallGraph) {
 // (0.7071, 0.7071, 0) not joined to the other + state. Re-measured in session 26: both runs
 // hold the same states and distinct links, mirrored.
 TEST(Metamorphic, SwappingAAndBMirrorsTheTwoLensGraph) {
-  SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
-  spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)
-  spec.seeds.clear();
-  expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
+  expect_mirrored(two_lenses(), generate(swap_objects(two_lenses_spec())),
+                  /*motion_families=*/false);
 }
 
 // Two generations of Example 1, the swapped one the slower (the bowl is then A): ~200 s of
@@ -133,7 +150,7 @@ TEST(Metamorphic, SwappingAAndBMirrorsTheTwoLensGraph) {
 // default) find it in the original, and both runs hold the same states and links, mirrored.
 TEST(Metamorphic, SwappingAAndBMirrorsExample1sGraph) {
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  expect_mirrored(generate(spec), generate(swap_objects(spec)), /*motion_families=*/false);
+  expect_mirrored(example1(), generate(swap_objects(spec)), /*motion_families=*/false);
 }
 
 // The scene with its seeds listed: the seed states' witnesses of a generated graph.
@@ -157,7 +174,7 @@ SceneSpec with_seeds_of(SceneSpec spec, const StateGraph& graph) {
 // {(fA-e1, 2)} -- {(fA-f1, 2)} was proved by slidingA in the original, combined in the mirror.
 TEST(Metamorphic, SwappedSlidingMotionsAreMirrored) {
   const SceneSpec spec = load_scene_file(testing::scene_path("example1.yaml"));
-  const Generated original = generate(spec);
+  const Generated& original = example1();
   expect_mirrored(original, generate(swap_objects(with_seeds_of(spec, original.graph))));
 }
 
@@ -166,11 +183,9 @@ TEST(Metamorphic, SwappedSlidingMotionsAreMirrored) {
 // {(eA-eB, 1)} -- {(eA-fB1, 1)} and -- {(eA-fB2, 1)} are sliding on one side, combined on the
 // other (SwappingAAndBMirrorsTheTwoLensGraph compares states and links only).
 TEST(Metamorphic, SwappedSlidingMotionsAreMirroredForTheTwoLenses) {
-  SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
-  spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)
-  spec.seeds.clear();
-  const Generated original = generate(spec);
-  expect_mirrored(original, generate(swap_objects(with_seeds_of(spec, original.graph))));
+  const Generated& original = two_lenses();
+  expect_mirrored(original,
+                  generate(swap_objects(with_seeds_of(two_lenses_spec(), original.graph))));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The graphs of the two shipped scenes beyond the paper's (issue 5): a torus (one face of
 // degree 4, with a hole) and the three-sphere lens (faces, edges and two vertices), both with
-// the paper's bowl-topped body as B. Each graph is generated once per test binary and shared.
+// the paper's bowl-topped body as B. Each graph is generated once per process and shared: the
+// TorusGraph and ThreeSpheresGraph tests each run in one process (tests/CMakeLists.txt, GROUPS).
 // Checked as the examples are: every witness re-checked by exact detection has exactly its
 // state's CF and no penetration; and the CFs the geometry implies are present (each
 // expectation says why).
@@ -25,8 +26,7 @@ const Generated& torus() {
 
 // Without the upward projections (GeneratorOptions::project_upward): measured in session 26,
 // they change nothing here (46 states, 294 links, the same CFs and distinct CF links) and cost
-// seven times the run (74,906 to 128,106 queries, 49 s to 363 s on one thread), paid by each
-// of the tests below (one process each).
+// seven times the run (74,906 to 128,106 queries, 49 s to 363 s on one thread).
 const Generated& three_spheres() {
   static const Generated g = [] {
     GeneratorOptions opt;

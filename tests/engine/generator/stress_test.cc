@@ -20,6 +20,13 @@ SceneSpec example(int n) {
   return load_scene_file(testing::scene_path("example" + std::to_string(n) + ".yaml"));
 }
 
+// Example 1's graph, the reference of the Example 1 stress tests, generated once per process
+// (tests/CMakeLists.txt runs those tests in one process).
+const Generated& example1() {
+  static const Generated g = generate(example(1));
+  return g;
+}
+
 // The files' decimal coefficients against the same transformation computed in double:
 // products of a few exact decimals, rounded once when printed (~1e-16 relative) and once per
 // operation of the substitution (~1e-15 of the largest coefficient).
@@ -88,7 +95,7 @@ TEST(StressScenes, FarRotatedAndMovedFilesHoldTheExamplesMoved) {
 
 // Both length units in one test: three generations of Example 1 (~5 s each on one core).
 TEST(StressScaling, Example1AtLengthUnits1eMinus4And1e4AndIllScaledObjects) {
-  const Generated ref = generate(example(1));
+  const Generated& ref = example1();
   for (const char* file : {"example1_scaled_1e-4.yaml", "example1_scaled_1e4.yaml",
                            "example1_ill_scaled_objects.yaml"}) {
     SCOPED_TRACE(file);
@@ -181,10 +188,10 @@ TEST(StressFrames, Example1FarFromTheOriginHasExample1sElementsAndContacts) {
   }
 }
 
-// The whole graph, generated once for the two tests below (two generations, ~30 s).
-const std::pair<Generated, Generated>& far_rotated_example1() {
-  static const std::pair<Generated, Generated> g{
-      generate(example(1)), generate(load_scene_file(stress_path("example1_far_rotated.yaml")))};
+// Example 1 and the whole graph far and rotated, generated once for the two tests below.
+const std::pair<const Generated&, Generated>& far_rotated_example1() {
+  static const std::pair<const Generated&, Generated> g{
+      example1(), generate(load_scene_file(stress_path("example1_far_rotated.yaml")))};
   return g;
 }
 
@@ -259,8 +266,7 @@ TEST(StressFrames, Example2MovedByASmallRigidMotionWithTheCompleteSearch) {
 // projections onto curves and vertices by its gradient's norm (surface.cc); the test used
 // to skip with "build_scene_geometry throws: edge 'e1': faces f1 and f2 never meet".
 TEST(StressCoefficients, Example1IllScaledWithinB) {
-  const Generated ref = generate(example(1));
-  expect_same_graph(generate(load_scene_file(stress_path("example1_ill_scaled.yaml"))), ref);
+  expect_same_graph(generate(load_scene_file(stress_path("example1_ill_scaled.yaml"))), example1());
 }
 
 }  // namespace
