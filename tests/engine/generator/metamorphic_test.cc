@@ -13,6 +13,7 @@ namespace pcsg {
 namespace {
 
 using testing::Generated;
+using testing::example1;
 using testing::generate;
 
 PtcType mirrored(PtcType t) {
@@ -104,13 +105,8 @@ void expect_mirrored(const Generated& original, const Generated& swapped,
   }
 }
 
-// The original graphs of two tests each, generated once per process (tests/CMakeLists.txt runs
-// each pair in one process).
-const Generated& example1() {
-  static const Generated g = generate(load_scene_file(testing::scene_path("example1.yaml")));
-  return g;
-}
-
+// The two lenses' original graph, read by two tests, generated once per process
+// (tests/CMakeLists.txt runs the pair in one process; Example 1's: testing::example1).
 SceneSpec two_lenses_spec() {
   SceneSpec spec = load_scene_file(testing::stress_path("collinear_edges.yaml"));
   spec.auto_seeds = true;  // the nine single contacts (stress_edges_test.cc)

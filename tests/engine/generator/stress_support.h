@@ -39,6 +39,13 @@ inline Generated generate(const SceneSpec& spec, bool search_upward = true) {
   return generate(spec, opt);
 }
 
+// Example 1's graph, generated once per process: the tests that compare against it run in one
+// process each group (tests/CMakeLists.txt, GROUPS).
+inline const Generated& example1() {
+  static const Generated g = generate(load_scene_file(scene_path("example1.yaml")));
+  return g;
+}
+
 inline std::string adjacent_pair(const std::string& a, const std::string& b) {
   return a < b ? a + " -- " + b : b + " -- " + a;
 }

@@ -13,18 +13,12 @@ namespace pcsg {
 namespace {
 
 using testing::Generated;
+using testing::example1;
 using testing::generate;
 using testing::stress_path;
 
 SceneSpec example(int n) {
   return load_scene_file(testing::scene_path("example" + std::to_string(n) + ".yaml"));
-}
-
-// Example 1's graph, the reference of the Example 1 stress tests, generated once per process
-// (tests/CMakeLists.txt runs those tests in one process).
-const Generated& example1() {
-  static const Generated g = generate(example(1));
-  return g;
 }
 
 // The files' decimal coefficients against the same transformation computed in double:
