@@ -264,24 +264,41 @@ std::string file_bytes(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// The torus's states and transitions drawn while its graph streams, in one run (the one small
+// scene that merges states; its generation is most of the two tests below, ~375 s each on a
+// slow 2-core machine when each ran its own): both tests read it, and run in one process (the
+// CTest group FiguresCommandTest.FinalNumbering).
+const std::string kTorusStates = " --only states --thumb 96x72";
+const std::string kTorusTransitions = " --only transitions --size 160x120 --max-frames 3";
+struct LiveTorus {
+  fs::path dir;
+  ExeRun run;
+};
+const LiveTorus& live_torus() {
+  static const LiveTorus live = [] {
+    LiveTorus l{fresh_dir("renumbered_live"), {}};
+    l.run = run_pcsg("figures -q --scene " + source("scenes/torus.yaml") + kTorusStates +
+                     kTorusTransitions + " --out " + l.dir.string());
+    return l;
+  }();
+  return live;
+}
+
 // The torus scene's run finds 13 states and proves two of them one region (the generator
 // merges and renumbers them when it ends): every states/state-NN.png must show the final
 // graph's state NN, the same picture as one drawn from the written graph.json, and no picture
 // of a merged-away id may stay. (Before session 7 the pictures kept their streaming ids:
 // Example 2's state-37.png showed {(eA-e1, 1), (fA1-e1, 1), (fA1-f1, 1)} while graph.json's
-// state 37 is {(fA2-e1, 2), (fA2-f1, 1)}.) About 150 s: the generation of the one small
-// scene that merges states.
+// state 37 is {(fA2-e1, 2), (fA2-f1, 1)}.)
 TEST(FiguresCommandTest, StatePicturesFollowTheFinalNumbering) {
-  const fs::path live = fresh_dir("renumbered_live"), stored = fresh_dir("renumbered_stored");
-  const ExeRun r = run_pcsg("figures -q --scene " + source("scenes/torus.yaml") +
-                            " --only states --thumb 96x72 --out " + live.string());
+  const fs::path live = live_torus().dir, stored = fresh_dir("renumbered_stored");
+  const ExeRun& r = live_torus().run;
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const fs::path graph = live / "torus" / "graph.json";
   std::ifstream in(graph);
   const std::size_t states = json::parse(in)["states"].size();
-  const ExeRun again =
-      run_pcsg("figures -q --scene " + source("scenes/torus.yaml") + " --graph " + graph.string() +
-               " --only states --thumb 96x72 --out " + stored.string());
+  const ExeRun again = run_pcsg("figures -q --scene " + source("scenes/torus.yaml") + " --graph " +
+                                graph.string() + kTorusStates + " --out " + stored.string());
   ASSERT_EQ(again.exit_code, 0) << again.out;
   std::size_t pictures = 0;
   for (const auto& f : fs::directory_iterator(live / "torus" / "states")) {
@@ -297,13 +314,13 @@ TEST(FiguresCommandTest, StatePicturesFollowTheFinalNumbering) {
 // id of its start state ("N-<target CF>") in its name, its frames' headers, its contact sheet
 // and frames.json; after the final merge each must carry the final ids, exactly as a drawing
 // of the written graph.json does. (Before session 8 they kept the streaming ids: the torus's
-// 13 states merge into 12.) About 200 s: the torus's generation and two drawings of its
-// candidates' motions, small and with few frames.
+// 13 states merge into 12.) The live drawing is live_torus()'s; the stored ones are two
+// drawings of its candidates' motions, small and with few frames.
 TEST(FiguresCommandTest, TransitionsFollowTheFinalNumbering) {
-  const fs::path live = fresh_dir("renumbered_tr_live"), stored = fresh_dir("renumbered_tr_stored");
-  const std::string common = " -q --scene " + source("scenes/torus.yaml") +
-                             " --only transitions --size 160x120 --max-frames 3 --out ";
-  const ExeRun r = run_pcsg("figures" + common + live.string());
+  const fs::path live = live_torus().dir, stored = fresh_dir("renumbered_tr_stored");
+  const std::string common =
+      " -q --scene " + source("scenes/torus.yaml") + kTorusTransitions + " --out ";
+  const ExeRun& r = live_torus().run;
   ASSERT_EQ(r.exit_code, 0) << r.out;
   // Every replay ends as the generation's motion did (until the candidates named their motion,
   // Candidate::run, one feasible candidate of the torus replayed into a collision).
