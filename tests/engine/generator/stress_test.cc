@@ -36,6 +36,13 @@ Pose far_rotation() {
   return X;
 }
 
+// B's motion in example2_moved.yaml: the same rotation, translated by (0.5, -0.25, 0.125) only.
+Pose small_motion() {
+  Pose X = far_rotation();
+  X.position = {0.5, -0.25, 0.125};
+  return X;
+}
+
 void expect_same_graph(const Generated& got, const Generated& ref) {
   const testing::GraphSignature want = testing::signature(ref.graph, ref.scene);
   const testing::GraphSignature have = testing::signature(got.graph, got.scene);
@@ -78,11 +85,8 @@ TEST(StressScenes, FarRotatedAndMovedFilesHoldTheExamplesMoved) {
     testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
     testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
   }
-  // example2_moved.yaml: the same rotation, translated by (0.5, -0.25, 0.125) only
-  Pose small = far_rotation();
-  small.position = {0.5, -0.25, 0.125};
   const SceneSpec got = load_scene_file(stress_path("example2_moved.yaml"));
-  const SceneSpec want = moved_scene(example(2), small);
+  const SceneSpec want = moved_scene(example(2), small_motion());
   testing::expect_faces_proportional(got.A, want.A, kFileCoefficients);
   testing::expect_faces_proportional(got.B, want.B, kFileCoefficients);
 }
@@ -90,11 +94,9 @@ TEST(StressScenes, FarRotatedAndMovedFilesHoldTheExamplesMoved) {
 // The two scenes of Example 2 that are scaled and moved at once: B moved as in
 // example2_far_rotated.yaml or example2_moved.yaml, then every length multiplied by 1e-4 or 1e4.
 TEST(StressScenes, ScaledAndMovedFilesHoldExample2ScaledAndMoved) {
-  Pose small = far_rotation();
-  small.position = {0.5, -0.25, 0.125};
   for (const auto& [file, X, s] :
        {std::tuple{"example2_far_rotated_scaled_1e-4.yaml", far_rotation(), 1e-4},
-        std::tuple{"example2_moved_scaled_1e4.yaml", small, 1e4}}) {
+        std::tuple{"example2_moved_scaled_1e4.yaml", small_motion(), 1e4}}) {
     SCOPED_TRACE(file);
     const SceneSpec got = load_scene_file(stress_path(file));
     const SceneSpec want = scaled_scene(moved_scene(example(2), X), s);
@@ -272,11 +274,10 @@ TEST(StressFrames, Example2MovedByASmallRigidMotion) {
 // default's 29 and 149), every witness exact. Until session 42 on example2_moved.yaml, unscaled
 // (2,425 s in CI, on two threads); the scale 1e4 rides on it since Example 2's scaled copies
 // left the suite (above). Passed in session 42 (2,193 s, two threads, beside other tests).
-// Measured in session 40 (one
-// thread, beside two other runs): 59 states, 710 links, 1,402,767 collision queries; Example 2
-// itself 53 states, 638 links, 1,379,332 queries. The four CFs the default search lacks in
-// every frame are found from witnesses that settle before two contacts of one pair merge
-// (TransitionMotion.SettlesBeforeTwoContactsOfOnePairMerge).
+// Measured in session 40 (one thread, beside two other runs): 59 states, 710 links, 1,402,767
+// collision queries; Example 2 itself 53 states, 638 links, 1,379,332 queries. The four CFs
+// the default search lacks in every frame are found from witnesses that settle before two
+// contacts of one pair merge (TransitionMotion.SettlesBeforeTwoContactsOfOnePairMerge).
 TEST(StressFrames, Example2ScaledBy1e4AndMovedWithTheCompleteSearch) {
   GeneratorOptions opt;
   opt.complete_search = true;
