@@ -117,6 +117,42 @@ inline void expect_both_crossing_regions(const Generated& g, const std::string& 
   EXPECT_EQ(signs, (std::vector<int>{-1, 1})) << pair << ": one region of each crossing sign";
 }
 
+// Example 2's lens (fA1 - eA - fA2) against B (f1 - e1 - f2 - e2 - f3): every pair of an A
+// element and a B element is a single-contact CF (A is convex, and turning it over exchanges
+// fA1 and fA2), two adjacent when one of the two elements changes to an adjacent one: a 3 x 5
+// grid of 15 CFs and 22 adjacent pairs (adjacent_pair), each list sorted.
+struct LensGrid {
+  std::vector<std::string> cfs, adjacent;
+};
+inline LensGrid lens_single_contact_grid() {
+  const std::vector<std::string> a = {"fA1", "eA", "fA2"}, b = {"f1", "e1", "f2", "e2", "f3"};
+  auto cf = [&](size_t i, size_t j) { return "{(" + a[i] + "-" + b[j] + ", 1)}"; };
+  LensGrid grid;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t j = 0; j < b.size(); ++j) {
+      grid.cfs.push_back(cf(i, j));
+      if (i + 1 < a.size()) grid.adjacent.push_back(adjacent_pair(cf(i, j), cf(i + 1, j)));
+      if (j + 1 < b.size()) grid.adjacent.push_back(adjacent_pair(cf(i, j), cf(i, j + 1)));
+    }
+  grid.cfs = sorted(grid.cfs);
+  grid.adjacent = sorted(grid.adjacent);
+  return grid;
+}
+
+// The links between single-contact states, as unique sorted adjacent pairs.
+inline std::vector<std::string> single_contact_adjacency(const StateGraph& g,
+                                                         const SceneGeometry& scene) {
+  std::vector<std::string> out;
+  for (const Link& l : g.links) {
+    const State &from = g.states[l.from], &to = g.states[l.to];
+    if (from.cf.cardinality() == 1 && to.cf.cardinality() == 1)
+      out.push_back(adjacent_pair(from.cf.str(scene), to.cf.str(scene)));
+  }
+  out = sorted(out);
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 // Each face of `got` is a positive multiple of the same face of `want` (same surface, same
 // solid side), to `relative` of the largest coefficient: a scene file holds what its comment
 // says it is.
