@@ -1,4 +1,4 @@
-// Validations: long generations of Example 2 (20-45 min of CPU each on this project's 2-core
+// Validations: long generations of Example 2 (15-45 min of CPU each on this project's 2-core
 // machine) against its stored signatures, in the frames and units the suite's stress tests
 // check on Example 1. They are not CTest tests: with them the suite outgrew CI's 90 minutes
 // (session 42: 9,930 s of CPU). `bash scripts/validate.sh` runs them (a change to the engine's

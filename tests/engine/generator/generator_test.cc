@@ -146,10 +146,6 @@ TEST(Generator, Example1HoldsTheEllipsoidAcrossTheDishInBothHands) {
   EXPECT_EQ(to_seed, 2);
 }
 
-// And the states and links are closed under the lens turned upside down (fA1 <-> fA2): every
-// state's CF with the two caps exchanged is a state's CF too, and every link's image a link
-// (each is one configuration under the other labelling; the session-6 run lacked
-// {(fA2-e1, 2), (fA2-f1, 1)}; a run without the link closure lacked six links' images).
 // Example 2 on one thread, generated once per process for the tests that read it (the
 // Example 2 group, tests/CMakeLists.txt).
 const Generated& example2() {
@@ -157,6 +153,10 @@ const Generated& example2() {
   return g;
 }
 
+// And the states and links are closed under the lens turned upside down (fA1 <-> fA2): every
+// state's CF with the two caps exchanged is a state's CF too, and every link's image a link
+// (each is one configuration under the other labelling; the session-6 run lacked
+// {(fA2-e1, 2), (fA2-f1, 1)}; a run without the link closure lacked six links' images).
 TEST(Generator, Example2WitnessesAreExact) {
   const Generated& g = example2();
   ASSERT_FALSE(g.graph.states.empty());
@@ -191,8 +191,8 @@ TEST(Generator, Example2WitnessesAreExact) {
 // contacts: every pair of an A element and a B element (each can touch each: A is convex, and
 // turning it over exchanges fA1 and fA2), adjacent when one of the two elements changes to an
 // adjacent one: a 3 x 5 grid of 15 CFs, 22 pairs. The rims crossing, {(eA-e1, 1)} and
-// {(eA-e2, 1)}, are one region of each crossing sign (testing::rim_crossing_sign; the sign
-// changes only through e-e-touch). Until session 8 one of the 22 pairs was always missing
+// {(eA-e2, 1)}, occur with both crossing signs (testing::rim_crossing_sign; the sign changes
+// only through e-e-touch); unlike the lens tip's LN graph, Example 2's may hold a sign twice. Until session 8 one of the 22 pairs was always missing
 // ({(eA-f1, 1)} -- {(fA2-f1, 1)}, then its mirror): each link's image under the lens turned over
 // (fA1 <-> fA2) now joins the images of its ends (generator.cc, add_relabelled_links). Until
 // session 43 checked on the LN graph grown from the lens standing on its tip
