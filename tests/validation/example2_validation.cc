@@ -51,13 +51,15 @@ TEST(Validation, Example2FarFromTheOriginAndRotated) {
 // B moved by a small rigid motion (example2_moved.yaml) with GeneratorOptions::complete_search:
 // the signature of Example 2's own frame with it (example2_complete.txt, 33 CFs and 211 distinct
 // links). The default search has 27 CFs here (StressFrames.Example2MovedByASmallRigidMotion,
-// skipped). Passed in session 41's CI (2,425 s, two threads).
+// skipped). Passed in session 41's CI (2,425 s, two threads), and in session 44 with its cuts
+// of the complete search (1,036 s, two threads, beside another validation).
 TEST(Validation, Example2MovedWithTheCompleteSearch) {
   expect_example2_signature("example2_moved.yaml", "example2_complete", true);
 }
 
 // The same motion with every length multiplied by 1e4 (example2_moved_scaled_1e4.yaml), complete
-// search: the same signature. Passed in session 42 (2,193 s, two threads, beside other tests).
+// search: the same signature. Passed in session 42 (2,193 s, two threads, beside other tests),
+// and in session 44 with its cuts of the complete search (1,163 s, beside the test suite).
 TEST(Validation, Example2ScaledBy1e4AndMovedWithTheCompleteSearch) {
   expect_example2_signature("example2_moved_scaled_1e4.yaml", "example2_complete", true);
 }

@@ -468,6 +468,7 @@ TEST(Generator, LinksAreIdenticalUnderRigidMotion) {
 // {(fA-e1, 2)} -> {(fA-f1, 1)}, lifting off both rim contacts, a kind of plan the first two
 // plans do not include). Session 39's first complete-CF patch gave the moved frame two
 // unjoined {(fA-e1, 1), (fA-f1, 1)} more: its general settling reached other witnesses first.
+// On the same graph: the complete search's second pass leaves out the CFs convexity rules out.
 TEST(Generator, CompleteSearchGraphIsIdenticalUnderRigidMotion) {
   const SceneSpec spec = example1_spec();
   const auto complete = [](const SceneSpec& sc) {
@@ -489,6 +490,20 @@ TEST(Generator, CompleteSearchGraphIsIdenticalUnderRigidMotion) {
     EXPECT_NE(std::find(more.links.begin(), more.links.end(), link), more.links.end()) << link;
   EXPECT_EQ(more.links.size(), signature(plain.graph, plain.scene).links.size() + 2);
   expect_witnesses_valid(ref);
+  // No CF that convexity rules out (lone_contact_pair) gets the complete search's second pass:
+  // the last motion each of its candidates reports is a default one (one of the first two
+  // plans, the narrow settling rule). Session 40's search ran that pass toward them too.
+  const std::vector<MotionVariant> variants = motion_variants();
+  int ruled_out = 0;
+  for (const Candidate& c : ref.graph.candidates) {
+    if (!lone_contact_pair(ref.scene, c.cf)) continue;
+    ++ruled_out;
+    ASSERT_TRUE(c.run.known()) << c.cf.str(ref.scene);
+    EXPECT_LT(c.run.plan, 2) << c.cf.str(ref.scene) << ": " << c.motion;
+    EXPECT_FALSE(variants[c.run.variant].general_settling)
+        << c.cf.str(ref.scene) << ": " << c.motion;
+  }
+  EXPECT_GT(ruled_out, 0);
 }
 
 // GeneratorOptions::project_upward (session 16; on by default since session 26). Example 1's
