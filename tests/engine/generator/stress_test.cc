@@ -237,7 +237,8 @@ TEST(StressFrames, Example2ScaledBy1eMinus4FarFromTheOriginAndRotated) {
 // CPU): all 33 CFs and all 211 links, and two links more, {(fA2-e1, 2)} -> {(eA-f2, 1)} and
 // {(fA2-e1, 2)} -> {(fA1-e1, 1)}, without their images under the lens turned over
 // ({(fA1-e1, 2)} -> {(eA-f2, 1)}, {(fA1-e1, 2)} -> {(fA2-e1, 1)}), which every other link of the
-// graph has. Neither changes one PtC into a neighbouring one; not yet looked into.
+// graph has. Neither changes one PtC into a neighbouring one; not yet looked into. The same in
+// session 44, after its cuts of the complete search (57 states, 682 links, 938,105 queries).
 TEST(StressFrames, Example2ScaledBy1eMinus4FarAndRotatedWithTheCompleteSearch) {
   GTEST_SKIP() << "open since session 42: Example 2's complete signature and two links more, "
                   "{(fA2-e1, 2)} -> {(eA-f2, 1)} and {(fA2-e1, 2)} -> {(fA1-e1, 1)}, without "
