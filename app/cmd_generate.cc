@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "app/command.h"
 #include "app/progress_line.h"
@@ -21,6 +24,28 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream f(p, std::ios::binary);
   if (!f) throw Error("cannot write " + p.string());
   f << text;
+}
+
+// "phase P%, ..." for the phases' shares of `total`, largest first, each with its seconds when
+// `seconds`; phases without a share left out (below a millisecond: nothing to look for).
+template <typename T>
+std::string phase_shares(std::vector<std::pair<std::string, T>> by_phase, T total, bool seconds) {
+  std::stable_sort(by_phase.begin(), by_phase.end(),
+                   [](const auto& x, const auto& y) { return x.second > y.second; });
+  std::string out;
+  for (const auto& [phase, amount] : by_phase) {
+    if (seconds ? amount < 1e-3 : amount == 0) continue;
+    char buf[112];
+    const double share = 100.0 * static_cast<double>(amount) /
+                         std::max(static_cast<double>(total), seconds ? 1e-9 : 1.0);
+    if (seconds)
+      std::snprintf(buf, sizeof buf, "%s%s %.0f%% (%.2f s)", out.empty() ? "" : ", ",
+                    phase.c_str(), share, static_cast<double>(amount));
+    else
+      std::snprintf(buf, sizeof buf, "%s%s %.0f%%", out.empty() ? "" : ", ", phase.c_str(), share);
+    out += buf;
+  }
+  return out;
 }
 
 struct Args {
@@ -57,19 +82,11 @@ void run(const Args& a) {
               "queries, %.3f s (generation %.3f s)\n",
               spec.name.c_str(), g.states.size(), g.links.size(), g.candidates.size(), feasible,
               g.stats.collision_queries, total, g.stats.seconds);
-  // where the queries went: the generator's phases, largest share first
-  std::string phases;
-  auto by_phase = g.stats.queries_by_phase;
-  std::stable_sort(by_phase.begin(), by_phase.end(),
-                   [](const auto& x, const auto& y) { return x.second > y.second; });
-  for (const auto& [phase, queries] : by_phase) {
-    if (queries == 0) continue;
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%s%s %.0f%%", phases.empty() ? "" : ", ", phase.c_str(),
-                  100.0 * queries / std::max(1L, g.stats.collision_queries));
-    phases += buf;
-  }
-  std::printf("  collision queries by phase: %s\n", phases.c_str());
+  // where the queries and the time went: the generator's phases, largest share first
+  std::printf("  collision queries by phase: %s\n",
+              phase_shares(g.stats.queries_by_phase, g.stats.collision_queries, false).c_str());
+  std::printf("  time by phase: %s\n",
+              phase_shares(g.stats.seconds_by_phase, g.stats.seconds, true).c_str());
   for (const State& s : g.states)
     std::printf("  state %d%s: %s\n", s.id, s.seed ? " (seed)" : "", s.cf.str(scene).c_str());
   std::printf("wrote %s/graph.json and %s/graph.dot\n", a.out.c_str(), a.out.c_str());

@@ -578,22 +578,56 @@ class Builder {
   StateGraph graph_;
   ConnectionMemo memo_;  // the run's CF-compliant motions, for the joins that repeat them
   MotionCounters counters_;
-  // Collision queries per Phase so far, and the phase now running with the count at its start.
+  // Collision queries per Phase so far, and the phase now running with the count at its
+  // start. The queries count where their counters are merged (a join run ahead counts in
+  // state identity, when find_state takes its answer).
   std::array<long, kPhases> phase_queries_{};
   Phase phase_ = Phase::Seeds;
   long phase_start_ = 0;
+  // The same for this thread's wall time (GraphStats::seconds_by_phase), whose phase also
+  // changes where a batch of parallel work starts (TimeScope): the batch's time is its phase's.
+  std::array<double, kPhases> phase_seconds_{};
+  Phase time_phase_ = Phase::Seeds;
+  std::chrono::steady_clock::time_point phase_since_ = std::chrono::steady_clock::now();
+  void switch_time_phase(Phase p) {
+    const auto now = std::chrono::steady_clock::now();
+    phase_seconds_[static_cast<int>(time_phase_)] +=
+        std::chrono::duration<double>(now - phase_since_).count();
+    phase_since_ = now;
+    time_phase_ = p;
+  }
   void switch_phase(Phase p) {
     phase_queries_[static_cast<int>(phase_)] += counters_.detections - phase_start_;
     phase_start_ = counters_.detections;
     phase_ = p;
+    switch_time_phase(p);
   }
-  // Attributes the queries counted while it lives to `p`, then returns to the phase before.
+  // Attributes the queries counted and the time spent while it lives to `p`, then returns to
+  // the phases before.
   class PhaseScope {
    public:
-    PhaseScope(Builder& b, Phase p) : b_(b), before_(b.phase_) { b_.switch_phase(p); }
-    ~PhaseScope() { b_.switch_phase(before_); }
+    PhaseScope(Builder& b, Phase p) : b_(b), before_(b.phase_), time_before_(b.time_phase_) {
+      b_.switch_phase(p);
+    }
+    ~PhaseScope() {
+      b_.switch_phase(before_);
+      b_.switch_time_phase(time_before_);
+    }
     PhaseScope(const PhaseScope&) = delete;
     PhaseScope& operator=(const PhaseScope&) = delete;
+
+   private:
+    Builder& b_;
+    Phase before_, time_before_;
+  };
+  // Attributes the time spent while it lives (not the queries) to `p`: a batch of parallel
+  // work whose counters are merged later, each in its own phase.
+  class TimeScope {
+   public:
+    TimeScope(Builder& b, Phase p) : b_(b), before_(b.time_phase_) { b_.switch_time_phase(p); }
+    ~TimeScope() { b_.switch_time_phase(before_); }
+    TimeScope(const TimeScope&) = delete;
+    TimeScope& operator=(const TimeScope&) = delete;
 
    private:
     Builder& b_;
@@ -695,6 +729,7 @@ Builder::JoinsAhead Builder::joins_ahead(const ContactFormation& cf, const Pose&
 
 std::vector<Builder::JoinsAhead> Builder::joins_ahead_of(
     const std::vector<const Discovery*>& found) {
+  TimeScope time(*this, Phase::Identity);  // (the queries count when find_state takes them)
   // joins_ahead of each, its joins in one list for the worker threads. Each (discovery,
   // state) group tries the state's witnesses in order until one joins, and the groups do not
   // depend on each other, so the list takes every group's first witness, then every group's
@@ -988,6 +1023,9 @@ void Builder::grow(int seed_id) {
     std::vector<std::vector<JoinsAhead>> ahead(jobs.size());
     std::vector<std::optional<Discovery>> probed(probes.size());
     std::vector<MotionCounters> probe_counters(probes.size());
+    // (the probes and the joins of the motions' ends, run here, count their queries in
+    // their own phases when merged, and their time in the motions')
+    std::optional<TimeScope> batch(std::in_place, *this, Phase::Motions);
     parallel_for(
         jobs.size() + probes.size(), options_.threads, [&] { return cancelled(); },
         [&](size_t j) {
@@ -1008,6 +1046,7 @@ void Builder::grow(int seed_id) {
                                   : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot,
                                                       p.vector, probe_counters[k]);
         });
+    batch.reset();
     if (cancelled()) break;
 
     // Merge in job order: deterministic whatever the thread count.
@@ -1566,6 +1605,7 @@ RegionSignatures Builder::missing_signatures(const std::vector<PointContact>& co
 
 StateGraph Builder::run() {
   const auto t0 = std::chrono::steady_clock::now();
+  phase_since_ = t0;
   std::vector<SeedCandidate> seeds;  // Phase::Seeds, the phase a Builder starts in
   if (scene_.spec.auto_seeds) {
     seeds = find_seed_candidates(scene_, counters_, options_.threads);
@@ -1652,12 +1692,13 @@ StateGraph Builder::run() {
   if (!cancelled()) join_duplicate_states();
   merge_united_states();
 
-  graph_.stats.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  switch_phase(phase_);  // the running phase's queries and time so far
+  graph_.stats.seconds = std::chrono::duration<double>(phase_since_ - t0).count();
   graph_.stats.collision_queries = counters_.detections;
-  switch_phase(phase_);  // the running phase's queries so far
-  for (int p = 0; p < kPhases; ++p)
+  for (int p = 0; p < kPhases; ++p) {
     graph_.stats.queries_by_phase.emplace_back(kPhaseNames[p], phase_queries_[p]);
+    graph_.stats.seconds_by_phase.emplace_back(kPhaseNames[p], phase_seconds_[p]);
+  }
   graph_.stats.pair_solves = counters_.pair_solves;
   graph_.stats.motion_steps = counters_.steps;
   graph_.stats.max_keep_drift = counters_.max_keep_drift;

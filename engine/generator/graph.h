@@ -65,6 +65,12 @@ struct GraphStats {
   // The collision queries by the part of the generator that asked them, in a fixed order
   // (generator.cc, kPhaseNames); they sum to collision_queries.
   std::vector<std::pair<std::string, long>> queries_by_phase;
+  // The wall time by the same phases, in the same order: the time each phase ran on the
+  // generator's own thread. Work its worker threads ran ahead counts in the phase that was
+  // running then (the motions' probes run beside the motions and count there), so this says
+  // where the run's seconds went, and queries_by_phase what each phase asked for. Sums to
+  // `seconds`.
+  std::vector<std::pair<std::string, double>> seconds_by_phase;
 };
 
 struct StateGraph {

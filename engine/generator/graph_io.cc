@@ -100,7 +100,12 @@ std::string graph_to_json(const StateGraph& graph, const SceneGeometry& scene,
   ordered_json phases = ordered_json::object();
   for (const auto& [phase, queries] : graph.stats.queries_by_phase) phases[phase] = queries;
   stats["collision_queries_by_phase"] = phases;
-  if (options.include_timing) stats["seconds"] = graph.stats.seconds;
+  if (options.include_timing) {
+    stats["seconds"] = graph.stats.seconds;
+    ordered_json seconds = ordered_json::object();
+    for (const auto& [phase, s] : graph.stats.seconds_by_phase) seconds[phase] = s;
+    stats["seconds_by_phase"] = seconds;
+  }
   j["stats"] = stats;
   return j.dump(2) + "\n";
 }

@@ -9,8 +9,8 @@
 namespace pcsg {
 
 struct GraphJsonOptions {
-  // Run-dependent figures (seconds) make the JSON differ between runs; determinism checks
-  // leave them out.
+  // Run-dependent figures (seconds, in all and by phase) make the JSON differ between runs;
+  // determinism checks leave them out.
   bool include_timing = true;
 };
 

@@ -30,6 +30,7 @@ json graph_without_time(const fs::path& dir) {
   std::ifstream in(dir / "graph.json");
   json g = json::parse(in);
   g["stats"].erase("seconds");
+  g["stats"].erase("seconds_by_phase");
   return g;
 }
 
@@ -46,6 +47,12 @@ TEST(GenerateCommand, DefaultThreadsGiveTheOneThreadGraph) {
   ASSERT_EQ(b.exit_code, 0) << b.out;
   EXPECT_EQ(graph_without_time(one).dump(), graph_without_time(all).dump());
   EXPECT_NE(b.out.find("11 states, 40 links"), std::string::npos) << b.out;
+  // the summary says where the queries and the seconds went, graph.json the seconds too
+  EXPECT_NE(b.out.find("\n  collision queries by phase: "), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find("\n  time by phase: "), std::string::npos) << b.out;
+  std::ifstream in(all / "graph.json");
+  const json g = json::parse(in);
+  EXPECT_GT(g["stats"]["seconds_by_phase"]["transition motions"].get<double>(), 0.0);
 }
 
 // --no-project-upward clears GeneratorOptions::project_upward: Example 1 then lacks the

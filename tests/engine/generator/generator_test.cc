@@ -1,6 +1,7 @@
 #include "engine/generator/generator.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <map>
@@ -278,6 +279,40 @@ TEST(Generator, QueriesByPhaseAddUpToTheTotal) {
   // the seed search and the motions of its three states both ask
   EXPECT_GT(g.graph.stats.queries_by_phase[0].second, 0);
   EXPECT_GT(g.graph.stats.queries_by_phase[1].second, 0);
+}
+
+// The run's wall time by the same phases, in the same order (GraphStats::seconds_by_phase):
+// every moment of the run in one phase, so they add up to its seconds; graph.json holds them
+// beside the seconds, and leaves both out without timing. On the lens against a ball (~1 s).
+TEST(Generator, SecondsByPhaseAddUpToTheRunsTime) {
+  const SceneSpec spec = load_scene_file(testing::scene_path("stress/weak_edge_sine_0.1.yaml"));
+  const Generated g = generate(spec);
+  const GraphStats& st = g.graph.stats;
+  ASSERT_EQ(st.seconds_by_phase.size(), st.queries_by_phase.size());
+  double sum = 0;
+  for (size_t k = 0; k < st.seconds_by_phase.size(); ++k) {
+    EXPECT_EQ(st.seconds_by_phase[k].first, st.queries_by_phase[k].first);
+    EXPECT_GE(st.seconds_by_phase[k].second, 0.0);
+    sum += st.seconds_by_phase[k].second;
+  }
+  // each phase's durations and the total are exact in nanoseconds; summing up to ~10^6
+  // durations as doubles rounds by at most ~10^6 half-ulps, 1e-10 of the total
+  EXPECT_NEAR(sum, st.seconds, 1e-9 * st.seconds);
+  EXPECT_GT(st.seconds, 0.0);
+  // the seed search, and the motions of each BFS level, take time of their own
+  EXPECT_GT(st.seconds_by_phase[0].second, 0.0);
+  EXPECT_GT(st.seconds_by_phase[1].second, 0.0);
+
+  const auto with = nlohmann::json::parse(graph_to_json(g.graph, g.scene));
+  ASSERT_TRUE(with["stats"].contains("seconds_by_phase"));
+  EXPECT_EQ(with["stats"]["seconds_by_phase"].size(), st.seconds_by_phase.size());
+  EXPECT_DOUBLE_EQ(with["stats"]["seconds_by_phase"]["transition motions"].get<double>(),
+                   st.seconds_by_phase[1].second);
+  GraphJsonOptions untimed;
+  untimed.include_timing = false;
+  const auto without = nlohmann::json::parse(graph_to_json(g.graph, g.scene, untimed));
+  EXPECT_FALSE(without["stats"].contains("seconds"));
+  EXPECT_FALSE(without["stats"].contains("seconds_by_phase"));
 }
 
 // The phases after the BFS levels report their progress (a long Example 2 run otherwise shows
