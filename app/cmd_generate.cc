@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -27,23 +28,25 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 }
 
 // "phase P%, ..." for the phases' shares of `total`, largest first, each with its seconds when
-// `seconds`; phases without a share left out (below a millisecond: nothing to look for).
+// they are seconds (T floating); phases without a share left out (below a millisecond: nothing
+// to look for).
 template <typename T>
-std::string phase_shares(std::vector<std::pair<std::string, T>> by_phase, T total, bool seconds) {
+std::string phase_shares(std::vector<std::pair<std::string, T>> by_phase, T total) {
+  constexpr bool seconds = std::is_floating_point_v<T>;
   std::stable_sort(by_phase.begin(), by_phase.end(),
                    [](const auto& x, const auto& y) { return x.second > y.second; });
   std::string out;
   for (const auto& [phase, amount] : by_phase) {
     if (seconds ? amount < 1e-3 : amount == 0) continue;
     char buf[112];
-    const double share = 100.0 * static_cast<double>(amount) /
-                         std::max(static_cast<double>(total), seconds ? 1e-9 : 1.0);
-    if (seconds)
-      std::snprintf(buf, sizeof buf, "%s%s %.0f%% (%.2f s)", out.empty() ? "" : ", ",
-                    phase.c_str(), share, static_cast<double>(amount));
-    else
-      std::snprintf(buf, sizeof buf, "%s%s %.0f%%", out.empty() ? "" : ", ", phase.c_str(), share);
+    std::snprintf(buf, sizeof buf, "%s%s %.0f%%", out.empty() ? "" : ", ", phase.c_str(),
+                  100.0 * static_cast<double>(amount) /
+                      std::max(static_cast<double>(total), seconds ? 1e-9 : 1.0));
     out += buf;
+    if (seconds) {
+      std::snprintf(buf, sizeof buf, " (%.2f s)", static_cast<double>(amount));
+      out += buf;
+    }
   }
   return out;
 }
@@ -84,9 +87,9 @@ void run(const Args& a) {
               g.stats.collision_queries, total, g.stats.seconds);
   // where the queries and the time went: the generator's phases, largest share first
   std::printf("  collision queries by phase: %s\n",
-              phase_shares(g.stats.queries_by_phase, g.stats.collision_queries, false).c_str());
+              phase_shares(g.stats.queries_by_phase, g.stats.collision_queries).c_str());
   std::printf("  time by phase: %s\n",
-              phase_shares(g.stats.seconds_by_phase, g.stats.seconds, true).c_str());
+              phase_shares(g.stats.seconds_by_phase, g.stats.seconds).c_str());
   for (const State& s : g.states)
     std::printf("  state %d%s: %s\n", s.id, s.seed ? " (seed)" : "", s.cf.str(scene).c_str());
   std::printf("wrote %s/graph.json and %s/graph.dot\n", a.out.c_str(), a.out.c_str());

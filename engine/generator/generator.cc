@@ -1023,30 +1023,33 @@ void Builder::grow(int seed_id) {
     std::vector<std::vector<JoinsAhead>> ahead(jobs.size());
     std::vector<std::optional<Discovery>> probed(probes.size());
     std::vector<MotionCounters> probe_counters(probes.size());
-    // (the probes and the joins of the motions' ends, run here, count their queries in
-    // their own phases when merged, and their time in the motions')
-    std::optional<TimeScope> batch(std::in_place, *this, Phase::Motions);
-    parallel_for(
-        jobs.size() + probes.size(), options_.threads, [&] { return cancelled(); },
-        [&](size_t j) {
-          if (j < jobs.size()) {
-            results[j] = try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
-                                        options_.measure_discretisation, options_.complete_search);
-            for (const Reached& t : results[j].targets)
-              ahead[j].push_back(t.candidate.feasible ? joins_ahead(t.candidate.cf, t.outcome.end,
-                                                                    t.outcome.contacts)
-                                                      : JoinsAhead{});
-            return;
-          }
-          const size_t k = j - jobs.size();
-          const Probe& p = probes[k];
-          const State& st = graph_.states[p.state];
-          probed[k] = p.pivot < 0 ? probe_for_contact(scene_, st.pose, st.contacts, p.vector,
-                                                      probe_counters[k])
-                                  : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot,
-                                                      p.vector, probe_counters[k]);
-        });
-    batch.reset();
+    {
+      // (the probes and the joins of the motions' ends, run here, count their queries in
+      // their own phases when merged, and their time in the motions')
+      TimeScope batch(*this, Phase::Motions);
+      parallel_for(
+          jobs.size() + probes.size(), options_.threads, [&] { return cancelled(); },
+          [&](size_t j) {
+            if (j < jobs.size()) {
+              results[j] =
+                  try_hypothesis(scene_, graph_.states[jobs[j].first], jobs[j].second,
+                                 options_.measure_discretisation, options_.complete_search);
+              for (const Reached& t : results[j].targets)
+                ahead[j].push_back(t.candidate.feasible
+                                       ? joins_ahead(t.candidate.cf, t.outcome.end,
+                                                     t.outcome.contacts)
+                                       : JoinsAhead{});
+              return;
+            }
+            const size_t k = j - jobs.size();
+            const Probe& p = probes[k];
+            const State& st = graph_.states[p.state];
+            probed[k] = p.pivot < 0 ? probe_for_contact(scene_, st.pose, st.contacts, p.vector,
+                                                        probe_counters[k])
+                                    : probe_by_rotation(scene_, st.pose, st.contacts, p.pivot,
+                                                        p.vector, probe_counters[k]);
+          });
+    }
     if (cancelled()) break;
 
     // Merge in job order: deterministic whatever the thread count.
