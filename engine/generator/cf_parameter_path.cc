@@ -28,12 +28,6 @@ constexpr double kSafeCrossing = M_PI / 6;
 // kSafeCone inside it midway (the cone's counterpart of kSafeCrossing).
 constexpr double kOffBoundary = 1e-2;
 constexpr double kSafeCone = 1.0 / 6;
-// Pieces a walk on a CF of several contacts tries before it gives up its waypoints when none
-// of them lies on the CF (the projection loses or breaks another contact on the way): then it
-// ends with the travel to the target as if none further did. The walk of Example 1 swapped
-// that joins two witnesses (session 30) reached its first waypoints at once; 86 of Example
-// 1's 120 walks reach none.
-constexpr size_t kBlindPieces = 3;
 // More pieces than this: the path is too long to be worth its motions.
 constexpr int kMaxPieces = 48;
 // Newton iterations that put a point back on its element's surfaces after a piece.
@@ -332,12 +326,7 @@ bool walk(const SceneGeometry& scene, const Pose& a, const PointContact& ca, con
       return proj.pose;
     };
     Pose at = a;
-    bool reached = false;  // whether a waypoint (or a half-way one) has been reached
     for (size_t k = 0; k < steps.size(); ++k) {
-      // No waypoint of the first kBlindPieces pieces on the CF: the walk goes on to its last
-      // piece, the travel to the target, as it would if none of the rest were either.
-      if (!reached && cf.cardinality() > 1 && k >= kBlindPieces && k + 1 < steps.size())
-        k = steps.size() - 1;
       const Step& st = steps[k];
       const bool last = k + 1 == steps.size();
       // the last waypoint is the target itself
@@ -345,14 +334,12 @@ bool walk(const SceneGeometry& scene, const Pose& a, const PointContact& ca, con
           last ? std::optional<Pose>(target) : waypoint(st.index, st.twist);
       if (next && moved_either_way(scene, at, *next, cf, counters)) {
         at = *next;
-        reached = true;
         continue;
       }
       // The piece in two halves; a waypoint that is not on the CF is passed over.
       const std::optional<Pose> half = waypoint(st.half_index, st.half_twist);
       if (half && moved_either_way(scene, at, *half, cf, counters)) {
         at = *half;
-        reached = true;
         if (next && moved_either_way(scene, at, *next, cf, counters)) {
           at = *next;
           continue;

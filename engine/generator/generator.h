@@ -37,16 +37,19 @@ struct GeneratorOptions {
   // image: a configuration and its mirror image may lie in different regions of one CF
   // (Example 1's ellipsoid across the dish, wall contact left or right of its rim contact).
   bool mirror_images = true;
-  // The complete search (off by default; `pcsg generate --complete`): where the motions tried
-  // by default (each hypothesis's first two plans, settling only where the settling contact
-  // turns) reach no target, every kind of plan, settling wherever the new region ends within a
-  // step, and the normal drive off an edge (MotionVariant); a symmetry image of a state that
-  // joins no state becomes a state. Example 2 then holds 33 CFs (29 by default: the lens on one
-  // cap across the rim, {(fA1-e1, 2)}, and {(fA1-e1, 1), (fA1-f1, 1)}, with their images) and
-  // the same 211 distinct links in its own frame and B moved, where the default search grows 29
-  // and 27 CFs. It costs Example 2 about 2.7 times the collision queries, which is why it is
-  // not the default yet (docs/paper-comparison.md, session 40).
-  bool complete_search = false;
+  // The complete search (the default since session 47; `pcsg generate --quick` turns it off):
+  // where the quick search's motions (each hypothesis's first two plans, settling only where
+  // the settling contact turns) reach no target, every kind of plan, settling wherever the new
+  // region ends within a step, and the normal drive off an edge (MotionVariant); a symmetry
+  // image of a state that joins no state becomes a state. Example 2 then holds 33 CFs (29 with
+  // the quick search: the lens on one cap across the rim, {(fA1-e1, 2)}, and {(fA1-e1, 1),
+  // (fA1-f1, 1)}, with their images) and the same 211 distinct links in its own frame and B
+  // moved, where the quick search grows 29 and 27 CFs; Example 1 two more distinct links. It
+  // costs Example 2 about 1.7 times the quick search's collision queries. No part of it is
+  // enough alone (session 47: without the normal drive or without the other plans Example 2
+  // has the 33 CFs but lacks 24 or 4 of the 211 links, at 1.47 and 1.63 times the queries;
+  // with the general settling alone 31 CFs; docs/paper-comparison.md, sessions 40 and 47).
+  bool complete_search = true;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
   // Length of one small motion step relative to the scene's length scale; 0 keeps the scene's

@@ -34,8 +34,9 @@ json graph_without_time(const fs::path& dir) {
   return g;
 }
 
-// On the two lenses whose rims touch (11 states, 40 links, every phase after the levels; ~9 s a
-// run): the command's route to the thread count is this test's subject. Example 1 itself is
+// On the two lenses whose rims touch (12 states, 48 links since session 47, both regions of the
+// touch: StressEdges.TwoLensesFromTheTouchingAndNearlyCollinearSeeds; every phase after the
+// levels; ~9 s a run): the command's route to the thread count is this test's subject. Example 1 itself is
 // compared at one and two threads by Generator.JsonIsByteIdenticalWithOneOrTwoThreads (on
 // Example 1 here the two runs took 140 s of the suite in session 42).
 TEST(GenerateCommand, DefaultThreadsGiveTheOneThreadGraph) {
@@ -46,7 +47,7 @@ TEST(GenerateCommand, DefaultThreadsGiveTheOneThreadGraph) {
   const ExeRun b = run_pcsg("generate -q " + scene + " -o " + all.string());
   ASSERT_EQ(b.exit_code, 0) << b.out;
   EXPECT_EQ(graph_without_time(one).dump(), graph_without_time(all).dump());
-  EXPECT_NE(b.out.find("11 states, 40 links"), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find("12 states, 48 links"), std::string::npos) << b.out;
   // the summary says where the queries and the seconds went, graph.json the seconds too
   EXPECT_NE(b.out.find("\n  collision queries by phase: "), std::string::npos) << b.out;
   EXPECT_NE(b.out.find("\n  time by phase: "), std::string::npos) << b.out;
@@ -86,14 +87,22 @@ TEST(GenerateCommand, NoMirrorImagesFlagLeavesOutTheOtherHand) {
       0);
 }
 
-// --complete sets GeneratorOptions::complete_search: Example 1 then has the default's 11 states
-// and 64 links instead of 58 (two distinct links more, lifting off both rim contacts at once;
-// generator_test.cc, Generator.CompleteSearchGraphIsIdenticalUnderRigidMotion).
-TEST(GenerateCommand, CompleteFlagTriesEveryKindOfPlan) {
-  const fs::path dir = fresh_dir("complete");
-  const ExeRun r = run_pcsg("generate -q --complete " + example1() + " -o " + dir.string());
+// --quick clears GeneratorOptions::complete_search (the default since session 47): Example 1
+// then has the same 11 states and 58 links instead of 64 (two distinct links fewer, lifting off
+// both rim contacts at once; generator_test.cc,
+// Generator.CompleteSearchAddsTwoLinksToTheQuickOnesInExample1). --complete, the default, is
+// still accepted, and not with --quick.
+TEST(GenerateCommand, QuickFlagTriesOnlyTheFirstTwoPlans) {
+  const fs::path dir = fresh_dir("quick");
+  const ExeRun r = run_pcsg("generate -q --quick " + example1() + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("11 states, 64 links"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("11 states, 58 links"), std::string::npos) << r.out;
+  const ExeRun both = run_pcsg("generate -q --quick --complete " + example1() + " -o " +
+                                   fresh_dir("quick_complete").string(),
+                               /*merge_stderr=*/true);
+  EXPECT_EQ(both.exit_code, 2) << both.out;
+  EXPECT_NE(both.out.find("--quick"), std::string::npos) << both.out;
+  EXPECT_NE(both.out.find("--complete"), std::string::npos) << both.out;
 }
 
 TEST(GenerateCommand, RejectsAThreadCountOutOfRange) {

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <set>
 
 #include "engine/contact/pair_solver.h"
 #include "stress_support.h"
@@ -180,21 +181,41 @@ TEST(StressEdges, TwoLensesFromAutomaticSeeds) {
 }
 
 // From the listed seeds (the touch, and the crossing at sine 1e-4): the same, plus the touch
-// state linked to the four states where one rim lies on the other lens's face. (The touch has
-// two regions too, rims parallel or antiparallel; e-e-touch is never hypothesised, so only
-// the seed's, antiparallel, is in the graph.) Until session 7 {(eA-eB, 1)} was held three
-// times (crossing signs -1, +1, +1): the seed at sine 1e-4 and a witness of its region at sine
-// 0.0136 were not joined, since every travel from the seed left the region within 0-12 steps
-// and the join along the contact's parameters kept each witness's own normal, on its cone's
-// boundary, at the walk's ends (cf_parameter_path.cc, kOffBoundary).
+// states linked to the four states where one rim lies on the other lens's face. The touch has
+// two regions, rims parallel or antiparallel (t_A . t_B with counterclockwise tangents, which
+// no motion keeping the rims collinear changes); e-e-touch is never hypothesised, so until
+// session 47 only the seed's, antiparallel, was in the graph. The complete search (the default
+// since session 47) adds the other: the seed's image under the lens A turned over, which joins
+// no state, becomes a state (generator.cc, image_state), with the images of the seed's links
+// (12 states, 48 links; the quick search has 11 and 40). Until session 7 {(eA-eB, 1)} was held
+// three times (crossing signs -1, +1, +1): the seed at sine 1e-4 and a witness of its region at
+// sine 0.0136 were not joined, since every travel from the seed left the region within 0-12
+// steps and the join along the contact's parameters kept each witness's own normal, on its
+// cone's boundary, at the walk's ends (cf_parameter_path.cc, kOffBoundary).
 TEST(StressEdges, TwoLensesFromTheTouchingAndNearlyCollinearSeeds) {
   const Generated g = generate(load_scene_file(stress_path("collinear_edges.yaml")));
   std::vector<std::string> states = lens_grid_states(), adj = lens_grid_adjacency();
   states.push_back("{(eA-eB, 1)}");
   states.push_back("{(eA-eB, 1, touch)}");
+  states.push_back("{(eA-eB, 1, touch)}");
   for (const char* n : {"{(fA1-eB, 1)}", "{(fA2-eB, 1)}", "{(eA-fB1, 1)}", "{(eA-fB2, 1)}"})
     adj.push_back(adjacent_pair("{(eA-eB, 1, touch)}", n));
   expect_graph(g, states, adj);
+  // one touch state of each orientation, each linked to the four
+  std::vector<int> orientations;
+  for (const State& s : g.graph.states) {
+    if (s.cf.str(g.scene) != "{(eA-eB, 1, touch)}") continue;
+    const PointContact& c = s.contacts.at(0);
+    const Eigen::Vector3d t_A = s.pose.rotate(Eigen::Vector3d::UnitZ().cross(c.p_A));
+    const Eigen::Vector3d t_B = Eigen::Vector3d::UnitZ().cross(c.p_B);
+    orientations.push_back(t_A.dot(t_B) > 0 ? 1 : -1);
+    std::set<int> neighbours;
+    for (const Link& l : g.graph.links)
+      if (l.from == s.id) neighbours.insert(l.to);
+    EXPECT_EQ(neighbours.size(), 4u) << "touch state " << s.id;
+  }
+  std::sort(orientations.begin(), orientations.end());
+  EXPECT_EQ(orientations, (std::vector<int>{-1, 1})) << "rims antiparallel and parallel";
   testing::expect_both_crossing_regions(g, "eA-eB");
 }
 
