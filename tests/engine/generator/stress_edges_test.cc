@@ -205,9 +205,7 @@ TEST(StressEdges, TwoLensesFromTheTouchingAndNearlyCollinearSeeds) {
   std::vector<int> orientations;
   for (const State& s : g.graph.states) {
     if (s.cf.str(g.scene) != "{(eA-eB, 1, touch)}") continue;
-    const PointContact& c = s.contacts.at(0);
-    const Eigen::Vector3d t_A = s.pose.rotate(Eigen::Vector3d::UnitZ().cross(c.p_A));
-    const Eigen::Vector3d t_B = Eigen::Vector3d::UnitZ().cross(c.p_B);
+    const auto [t_A, t_B] = testing::rim_tangents(s, s.contacts.at(0));
     orientations.push_back(t_A.dot(t_B) > 0 ? 1 : -1);
     std::set<int> neighbours;
     for (const Link& l : g.graph.links)

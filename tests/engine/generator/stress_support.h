@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/contact/contact.h"
@@ -95,12 +96,18 @@ inline void expect_graph(const Generated& g, const std::vector<std::string>& sta
 // bowl's rims e1 and e2) crossing at a state's e-e contact: the sign of (t_A x t_B) . n, with
 // t = z x p the counterclockwise tangents. It is constant on a region of an e-e-cross CF and
 // changes only through e-e-touch (t_A parallel to t_B), a different CF: so such a CF has two
-// regions, one of each sign (turning a lens over changes the sign).
+// regions, one of each sign (turning a lens over changes the sign). rim_tangents: t_A and t_B
+// in B's frame at contact c of state s.
+inline std::pair<Eigen::Vector3d, Eigen::Vector3d> rim_tangents(const State& s,
+                                                                const PointContact& c) {
+  return {s.pose.rotate(Eigen::Vector3d::UnitZ().cross(c.p_A)),
+          Eigen::Vector3d::UnitZ().cross(c.p_B)};
+}
+
 inline int rim_crossing_sign(const State& s, const std::string& pair, const SceneGeometry& scene) {
   for (const PointContact& c : s.contacts)
     if (element_pair_name(scene, c.a, c.b) == pair) {
-      const Eigen::Vector3d t_A = s.pose.rotate(Eigen::Vector3d::UnitZ().cross(c.p_A));
-      const Eigen::Vector3d t_B = Eigen::Vector3d::UnitZ().cross(c.p_B);
+      const auto [t_A, t_B] = rim_tangents(s, c);
       return t_A.cross(t_B).dot(c.normal_B) > 0 ? 1 : -1;
     }
   ADD_FAILURE() << "state " << s.id << " has no contact " << pair;
