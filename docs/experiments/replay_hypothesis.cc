@@ -53,10 +53,10 @@ int main(int argc, char** argv) {
   s.cf = cf;
   s.pose = p;
   s.contacts = rep.contacts;
-  for (const Hypothesis& h : hypothesise_ln(scene, rep.contacts)) {
+  for (const Hypothesis& h : hypothesise_ln(scene, rep.contacts, /*complete=*/true)) {
     if (!(h.cf == want)) continue;
     std::printf("hypothesis %s: %zu plans\n", h.cf.str(scene).c_str(), h.plan_options.size());
-    TryResult r = try_hypothesis(scene, s, h, false);
+    TryResult r = try_hypothesis(scene, s, h, false, /*complete=*/true);
     // Every run, as try_hypothesis would try it (without its early stops).
     MotionStarts starts(scene, s, h);
     const std::vector<MotionVariant> variants = motion_variants();
@@ -69,9 +69,9 @@ int main(int argc, char** argv) {
           if (!variant_matters(variants[v], h.plan_options[pl], start.contacts)) continue;
           MotionOutcome o = run_transition_motion(scene, start.pose, start.contacts,
                                                   h.plan_options[pl], h.cf, variants[v], counters);
-          std::printf("  run %zu/%zu/%zu %s%s: feasible %d general %d steps %d %s\n", k, pl, v,
+          std::printf("  run %zu/%zu/%zu %s%s: feasible %d general stop %d steps %d %s\n", k, pl, v,
                       start.prefix.c_str(), o.motion.c_str(), (int)o.feasible,
-                      (int)o.general_settling, o.steps, o.reason.c_str());
+                      (int)o.general_stop, o.steps, o.reason.c_str());
           if (o.feasible)
             std::printf("    end %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", o.end.position.x(),
                         o.end.position.y(), o.end.position.z(), o.end.quaternion.w(),
