@@ -512,9 +512,15 @@ class Builder {
   // Each state's witness under each relabelling half turn, re-detected; nullopt where the
   // re-detection does not touch as the state does (left out rather than trusted).
   std::vector<std::optional<Discovery>> relabelled_images(int id);
-  // The configuration Y, an image of state id's witness under a symmetry, re-detected: nullopt
-  // unless it touches as the state does (no penetration, as many contacts).
-  std::optional<Discovery> image_at(int id, const Pose& Y);
+  // The configuration Y, an image of state id's witness under a symmetry that maps A's
+  // elements by `in_A` and B's by `in_B` (nullptr: that solid's stay), re-detected: nullopt
+  // unless it touches as the state does, on the images of its elements (no penetration, the
+  // state's CF mapped). A witness near its region's boundary may read otherwise there (Example 2
+  // far and rotated: a {(eA-e1, 1), (fA2-e1, 1)} witness, reflected, read {(fA2-e1, 2)}, its
+  // lens-rim contact on fA2 beside the rim), and the links mirrored through it joined CFs no
+  // LN transition joins ({(fA2-e1, 2)} -> {(fA1-e1, 1)} and -> {(eA-f2, 1)}).
+  std::optional<Discovery> image_at(int id, const Pose& Y, const ElementMap* in_A,
+                                    const ElementMap* in_B);
   // Whether a state of this class (CF and region signature) is held already.
   bool class_held(const ContactFormation& cf, const RegionSignature& sig) const;
   // Each LN link's image under the relabelling half turns and the mirror (mirror_image),
@@ -1166,13 +1172,17 @@ void Builder::join_duplicate_states() {
   if (!cancelled()) walk.upto(n - 1);
 }
 
-std::optional<Discovery> Builder::image_at(int id, const Pose& Y) {
+std::optional<Discovery> Builder::image_at(int id, const Pose& Y, const ElementMap* in_A,
+                                          const ElementMap* in_B) {
   ++counters_.detections;
   ContactReport rep = detect_contacts(scene_, Y);
-  // The state's configuration moved by a symmetry: it touches as the state does.
+  // The state's configuration moved by a symmetry: it touches as the state does, on the
+  // images of its elements.
   if (rep.penetrating() || rep.contacts.size() != graph_.states[id].contacts.size())
     return std::nullopt;
-  return Discovery{ContactFormation::of(rep.contacts), Y, std::move(rep.contacts)};
+  ContactFormation cf = ContactFormation::of(rep.contacts);
+  if (!(cf == image_cf(graph_.states[id].cf, in_A, in_B))) return std::nullopt;
+  return Discovery{std::move(cf), Y, std::move(rep.contacts)};
 }
 
 bool Builder::class_held(const ContactFormation& cf, const RegionSignature& sig) const {
@@ -1182,13 +1192,13 @@ bool Builder::class_held(const ContactFormation& cf, const RegionSignature& sig)
 
 std::vector<std::optional<Discovery>> Builder::relabelled_images(int id) {
   const State& st = graph_.states[id];
-  std::vector<Pose> turned;
-  for (const SymmetryAxis& h : symmetry_.relabelling_A)
-    turned.push_back(turned_about_A(st.pose, h, M_PI));
-  for (const SymmetryAxis& h : symmetry_.relabelling_B)
-    turned.push_back(turned_about_B(st.pose, h, M_PI));
   std::vector<std::optional<Discovery>> images;
-  for (const Pose& Y : turned) images.push_back(image_at(id, Y));
+  for (size_t k = 0; k < symmetry_.relabelling_A.size(); ++k)
+    images.push_back(image_at(id, turned_about_A(st.pose, symmetry_.relabelling_A[k], M_PI),
+                              &symmetry_.relabelling_A_elements[k], nullptr));
+  for (size_t k = 0; k < symmetry_.relabelling_B.size(); ++k)
+    images.push_back(image_at(id, turned_about_B(st.pose, symmetry_.relabelling_B[k], M_PI),
+                              nullptr, &symmetry_.relabelling_B_elements[k]));
   return images;
 }
 
@@ -1265,7 +1275,8 @@ void Builder::add_relabelled_links() {
 std::optional<Discovery> Builder::mirror_image(int id) {
   if (symmetry_.mirrors_A.empty() || symmetry_.mirrors_B.empty()) return std::nullopt;
   return image_at(id,
-                  mirrored(graph_.states[id].pose, symmetry_.mirrors_A[0], symmetry_.mirrors_B[0]));
+                  mirrored(graph_.states[id].pose, symmetry_.mirrors_A[0], symmetry_.mirrors_B[0]),
+                  &symmetry_.mirror_A_elements[0], &symmetry_.mirror_B_elements[0]);
 }
 
 bool Builder::add_mirrored_states() {

@@ -131,6 +131,14 @@ SceneSymmetry SceneSymmetry::of(const SceneGeometry& scene) {
   s.relabelling_B = relabelling_half_turns(scene.B, scene.tol, s.B);
   s.mirrors_A = mirror_planes(scene.A, scene.tol, s.A);
   s.mirrors_B = mirror_planes(scene.B, scene.tol, s.B);
+  for (const SymmetryAxis& h : s.relabelling_A)
+    s.relabelling_A_elements.push_back(*half_turn_elements(scene.A, scene.tol, h));
+  for (const SymmetryAxis& h : s.relabelling_B)
+    s.relabelling_B_elements.push_back(*half_turn_elements(scene.B, scene.tol, h));
+  for (const MirrorPlane& m : s.mirrors_A)
+    s.mirror_A_elements.push_back(*mirror_elements(scene.A, scene.tol, m));
+  for (const MirrorPlane& m : s.mirrors_B)
+    s.mirror_B_elements.push_back(*mirror_elements(scene.B, scene.tol, m));
   return s;
 }
 

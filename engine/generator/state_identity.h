@@ -48,6 +48,10 @@ struct SceneSymmetry {
   std::vector<SymmetryAxis> relabelling_A, relabelling_B;
   // Planes of mirror symmetry (mirror_planes), in each solid's frame.
   std::vector<MirrorPlane> mirrors_A, mirrors_B;
+  // Where each of those maps the solid's elements, index for index (every one a map: the
+  // lists above hold only symmetries whose element maps exist).
+  std::vector<ElementMap> relabelling_A_elements, relabelling_B_elements;
+  std::vector<ElementMap> mirror_A_elements, mirror_B_elements;
   static SceneSymmetry of(const SceneGeometry& scene);
 };
 

@@ -93,13 +93,14 @@ std::optional<SymmetryAxis> axis_of_revolution(const Solid& S, const Tolerances&
 
 namespace {
 
-// Whether the affine map `image` maps the solid onto itself: every surface onto a surface
-// (checked on the grid `points`, to tol.symmetry_relative) and every face, edge and vertex
-// onto one (one surface may hold several patches, two surfaces several curves). nullopt when
-// it does not; else whether any element lands on another (a relabelling).
+// The element map of the affine map `image_of`, when it maps the solid onto itself: every
+// surface onto a surface (checked on the grid `points`, to tol.symmetry_relative) and every
+// face, edge and vertex onto one (one surface may hold several patches, two surfaces several
+// curves); nullopt when it does not.
 template <typename Map>
-std::optional<bool> maps_onto_itself(const Solid& S, const Tolerances& tol,
-                                     const std::vector<Eigen::Vector3d>& points, Map&& image_of) {
+std::optional<ElementMap> maps_onto_itself(const Solid& S, const Tolerances& tol,
+                                           const std::vector<Eigen::Vector3d>& points,
+                                           Map&& image_of) {
   const int n_surfaces = static_cast<int>(S.surfaces.size());
   // Each surface's image: the first surface that the mapped polynomial equals.
   std::vector<int> image(n_surfaces, -1);
@@ -117,20 +118,23 @@ std::optional<bool> maps_onto_itself(const Solid& S, const Tolerances& tol,
     if (image[i] < 0) return std::nullopt;
   }
   const double near = tol.distinct_points;
-  bool moved = false;
+  ElementMap map;
   for (size_t f = 0; f < S.faces.size(); ++f) {
     const int to = S.face_at(image[S.faces[f].surface], image_of(S.faces[f].interior_point), near);
     if (to < 0) return std::nullopt;
-    moved = moved || to != static_cast<int>(f);
+    map.faces.push_back(to);
   }
   for (size_t e = 0; e < S.edges.size(); ++e) {
     const Edge& E = S.edges[e];
-    if (E.samples.empty()) continue;
+    if (E.samples.empty()) {
+      map.edges.push_back(static_cast<int>(e));
+      continue;
+    }
     const Eigen::Vector3d q = image_of(E.samples[E.samples.size() / 2].point);
     int to = S.edge_at(image[E.surface1], image[E.surface2], q, near);
     if (to < 0) to = S.edge_at(image[E.surface2], image[E.surface1], q, near);
     if (to < 0) return std::nullopt;
-    moved = moved || to != static_cast<int>(e);
+    map.edges.push_back(to);
   }
   for (size_t v = 0; v < S.vertices.size(); ++v) {
     const Eigen::Vector3d q = image_of(S.vertices[v].point);
@@ -138,9 +142,18 @@ std::optional<bool> maps_onto_itself(const Solid& S, const Tolerances& tol,
     for (size_t w = 0; w < S.vertices.size() && to < 0; ++w)
       if ((S.vertices[w].point - q).norm() <= near) to = static_cast<int>(w);
     if (to < 0) return std::nullopt;
-    moved = moved || to != static_cast<int>(v);
+    map.vertices.push_back(to);
   }
-  return moved;
+  return map;
+}
+
+std::optional<ElementMap> half_turn_map(const Solid& S, const Tolerances& tol,
+                                        const std::vector<Eigen::Vector3d>& points,
+                                        const SymmetryAxis& axis) {
+  const Eigen::Matrix3d R = rotation_about(axis.direction, M_PI);
+  const Eigen::Vector3d& c = axis.point;
+  return maps_onto_itself(
+      S, tol, points, [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); });
 }
 
 // The candidate centres: the solid's origin and its box centre.
@@ -166,16 +179,49 @@ std::vector<SymmetryAxis> half_turns(const Solid& S, const Tolerances& tol,
       axis.point = c;
       axis.direction = Eigen::Vector3d::Unit(a);
       if (revolution && revolution->direction.cross(axis.direction).norm() < 1e-6) continue;
-      const Eigen::Matrix3d R = rotation_about(axis.direction, M_PI);
-      const std::optional<bool> moved = maps_onto_itself(
-          S, tol, points,
-          [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return c + R * (p - c); });
-      if (moved && *moved == relabelling) out.push_back(axis);
+      const std::optional<ElementMap> map = half_turn_map(S, tol, points, axis);
+      if (map && map->identity() != relabelling) out.push_back(axis);
     }
   return out;
 }
 
 }  // namespace
+
+ElementId ElementMap::operator()(ElementId x) const {
+  const std::vector<int>& to = x.kind == ElementKind::Face   ? faces
+                               : x.kind == ElementKind::Edge ? edges
+                                                             : vertices;
+  if (x.index >= 0 && x.index < static_cast<int>(to.size())) x.index = to[x.index];
+  return x;
+}
+
+bool ElementMap::identity() const {
+  for (const std::vector<int>* to : {&faces, &edges, &vertices})
+    for (size_t i = 0; i < to->size(); ++i)
+      if ((*to)[i] != static_cast<int>(i)) return false;
+  return true;
+}
+
+ContactFormation image_cf(const ContactFormation& cf, const ElementMap* in_A,
+                          const ElementMap* in_B) {
+  ContactFormation image;
+  for (const PtcCount& e : cf.entries())
+    image.add(in_A ? (*in_A)(e.a) : e.a, in_B ? (*in_B)(e.b) : e.b, e.type, e.count);
+  return image;
+}
+
+std::optional<ElementMap> half_turn_elements(const Solid& S, const Tolerances& tol,
+                                             const SymmetryAxis& axis) {
+  if (S.surfaces.empty() || S.bbox.isEmpty()) return std::nullopt;
+  return half_turn_map(S, tol, box_grid(S), axis);
+}
+
+std::optional<ElementMap> mirror_elements(const Solid& S, const Tolerances& tol,
+                                          const MirrorPlane& plane) {
+  if (S.surfaces.empty() || S.bbox.isEmpty()) return std::nullopt;
+  return maps_onto_itself(S, tol, box_grid(S),
+                          [&](const Eigen::Vector3d& p) { return plane.reflect(p); });
+}
 
 std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
                                          const std::optional<SymmetryAxis>& revolution) {

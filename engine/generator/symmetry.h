@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/contact/contact_formation.h"
 #include "engine/core/pose.h"
 #include "engine/core/tolerances.h"
 #include "engine/geometry/solid.h"
@@ -45,6 +46,26 @@ std::vector<SymmetryAxis> half_turn_axes(const Solid& S, const Tolerances& tol,
 std::vector<SymmetryAxis> relabelling_half_turns(const Solid& S, const Tolerances& tol,
                                                  const std::optional<SymmetryAxis>& revolution);
 
+// Where a symmetry of a solid puts each of its elements: faces[f], edges[e], vertices[v] are
+// the indices of the elements that f, e and v are mapped onto (the identity for a symmetry
+// that moves no element; fA1 <-> fA2 for Example 2's lens turned over).
+struct ElementMap {
+  std::vector<int> faces, edges, vertices;
+  ElementId operator()(ElementId x) const;
+  bool identity() const;
+};
+
+// The CF of a configuration's image under a symmetry that maps A's elements by `in_A` and B's
+// by `in_B` (nullptr: that solid's elements stay): each PtC on the images of its elements,
+// its type and count kept.
+ContactFormation image_cf(const ContactFormation& cf, const ElementMap* in_A,
+                          const ElementMap* in_B);
+
+// The element map of the half turn about `axis` (in S's frame), when that turn maps S onto
+// itself (checked as half_turn_axes does); nullopt otherwise.
+std::optional<ElementMap> half_turn_elements(const Solid& S, const Tolerances& tol,
+                                             const SymmetryAxis& axis);
+
 // A plane of mirror symmetry, in the solid's own frame.
 struct MirrorPlane {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
@@ -70,6 +91,11 @@ std::vector<MirrorPlane> mirror_planes(const Solid& S, const Tolerances& tol,
 // X' = M_B X M_A. A lies where M_B puts X's A (M_A maps A onto itself), so X' touches B at
 // the mirror images of X's contacts, on the images of its elements.
 Pose mirrored(const Pose& X, const MirrorPlane& in_A, const MirrorPlane& in_B);
+
+// The element map of the reflection in `plane` (in S's frame), when it maps S onto itself;
+// nullopt otherwise.
+std::optional<ElementMap> mirror_elements(const Solid& S, const Tolerances& tol,
+                                          const MirrorPlane& plane);
 
 // The pose reached by turning A about B's axis `axis_B` by `angle` (radians): X' = R X.
 Pose turned_about_B(const Pose& X, const SymmetryAxis& axis_B, double angle);

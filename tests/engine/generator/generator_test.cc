@@ -24,12 +24,9 @@ namespace pcsg {
 namespace {
 
 using testing::GraphSignature;
+using testing::expect_witnesses_valid;
+using testing::Generated;
 using testing::signature;
-
-struct Generated {
-  SceneGeometry scene;
-  StateGraph graph;
-};
 
 Generated generate(const SceneSpec& spec, int threads = 1) {
   Generated g{build_scene_geometry(spec), {}};
@@ -47,28 +44,6 @@ SceneSpec example1_spec() { return load_scene_file(testing::scene_path("example1
 const Generated& example1() {
   static const Generated g = generate(example1_spec());
   return g;
-}
-
-// Every witness, re-checked by the exact contact computation, carries exactly its state's CF
-// and does not penetrate; its contacts are exact.
-void expect_witnesses_valid(const Generated& g) {
-  for (const State& s : g.graph.states) {
-    const ContactReport rep = detect_contacts(g.scene, s.pose);
-    EXPECT_FALSE(rep.penetrating()) << "state " << s.id << " " << s.cf.str(g.scene);
-    EXPECT_EQ(ContactFormation::of(rep.contacts).str(g.scene), s.cf.str(g.scene))
-        << "state " << s.id;
-    for (const PointContact& c : rep.contacts)
-      EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale)
-          << "state " << s.id << ": the witness's contacts are exact to 1e-10 of the size";
-  }
-  // Links join existing states; LN links never raise cardinality (Section II-D).
-  for (const Link& l : g.graph.links) {
-    ASSERT_GE(l.from, 0);
-    ASSERT_LT(l.to, static_cast<int>(g.graph.states.size()));
-    if (l.kind == LinkKind::LN) {
-      EXPECT_LE(g.graph.states[l.to].cf.cardinality(), g.graph.states[l.from].cf.cardinality());
-    }
-  }
 }
 
 // Candidates toward a CF that the convexity condition rules out (convex_support.h: a contact

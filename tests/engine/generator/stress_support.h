@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/contact/contact.h"
+#include "engine/generator/hypothesis.h"
 #include "generator_test_support.h"
 
 namespace pcsg::testing {
@@ -70,6 +71,13 @@ inline std::vector<std::string> sorted(std::vector<std::string> v) {
 
 // Every witness, re-checked by the exact contact computation, carries its state's CF and no
 // penetration, and its contacts are exact to 1e-10 L (the generator's own witness check).
+// Every link joins two states; an LN link never raises cardinality (Section II-D) and joins
+// CFs an LN hypothesis joins (Section III-A: some PtCs kept, some changed to neighbouring ones,
+// some removed; hypothesise_ln with every kind of plan): the generator's motions only arrive
+// at their hypotheses' CFs, so a link between other CFs came through a symmetry image read on
+// another CF (Example 2 far and rotated until session 49: {(fA2-e1, 2)} -> {(fA1-e1, 1)}, the
+// mirror image of a link from {(eA-e1, 1), (fA2-e1, 1)}, whose reflected witness read
+// {(fA2-e1, 2)}).
 inline void expect_witnesses_valid(const Generated& g) {
   for (const State& s : g.graph.states) {
     const ContactReport rep = detect_contacts(g.scene, s.pose);
@@ -77,7 +85,20 @@ inline void expect_witnesses_valid(const Generated& g) {
     EXPECT_EQ(ContactFormation::of(rep.contacts).str(g.scene), s.cf.str(g.scene))
         << "state " << s.id;
     for (const PointContact& c : rep.contacts)
-      EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale) << "state " << s.id;
+      EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale)
+          << "state " << s.id << ": the witness's contacts are exact to 1e-10 of the size";
+  }
+  const int n = static_cast<int>(g.graph.states.size());
+  for (const Link& l : g.graph.links) {
+    ASSERT_TRUE(l.from >= 0 && l.from < n && l.to >= 0 && l.to < n) << l.from << " -> " << l.to;
+    if (l.kind != LinkKind::LN) continue;
+    const State &from = g.graph.states[l.from], &to = g.graph.states[l.to];
+    EXPECT_LE(to.cf.cardinality(), from.cf.cardinality());
+    bool hypothesised = false;
+    for (const Hypothesis& h : hypothesise_ln(g.scene, from.contacts, true))
+      hypothesised = hypothesised || h.cf == to.cf;
+    EXPECT_TRUE(hypothesised) << "LN link " << from.cf.str(g.scene) << " -> " << to.cf.str(g.scene)
+                              << " (" << l.motion << "): no LN hypothesis joins these CFs";
   }
 }
 

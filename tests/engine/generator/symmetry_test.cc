@@ -146,6 +146,46 @@ TEST(Symmetry, RelabellingHalfTurnsOfTheShippedScenes) {
   EXPECT_EQ(ex2.B.element_name(b.contacts[0].b), "f2");
 }
 
+// Where the symmetries put the elements: the lens turned over exchanges its caps and keeps
+// its rim, and so does its equatorial mirror; its planes through the axis and the bowl's keep
+// every element. A CF's image follows the map ({(fA1-e1, 1)} turned over is {(fA2-e1, 1)}),
+// so that a re-detected image reading another CF (a witness on its region's boundary) can be
+// told from the state's image (Builder::image_at).
+TEST(Symmetry, ElementMapsOfTheShippedScenes) {
+  const SceneGeometry ex2 = scene("example2.yaml");
+  const SceneSymmetry s2 = SceneSymmetry::of(ex2);
+  const Solid& A = ex2.A;
+  auto name = [&](const ElementMap& m, const char* element) {
+    return A.element_name(m(A.find(element)));
+  };
+  ASSERT_EQ(s2.relabelling_A_elements.size(), s2.relabelling_A.size());
+  for (const ElementMap& m : s2.relabelling_A_elements) {
+    EXPECT_EQ(name(m, "fA1"), "fA2");
+    EXPECT_EQ(name(m, "fA2"), "fA1");
+    EXPECT_EQ(name(m, "eA"), "eA");
+    EXPECT_FALSE(m.identity());
+  }
+  ASSERT_EQ(s2.mirror_A_elements.size(), 3u);
+  int exchanging = 0;
+  for (const ElementMap& m : s2.mirror_A_elements) {
+    exchanging += m.identity() ? 0 : 1;
+    EXPECT_EQ(name(m, "eA"), "eA");
+  }
+  EXPECT_EQ(exchanging, 1);  // the equatorial plane
+  EXPECT_TRUE(s2.mirror_A_elements[0].identity());  // the one mirror_image uses
+  ASSERT_EQ(s2.mirror_B_elements.size(), s2.mirrors_B.size());
+  for (const ElementMap& m : s2.mirror_B_elements) EXPECT_TRUE(m.identity());
+  const ContactFormation cf = ContactFormation::parse("{(fA1-e1, 2), (fA1-f1, 1)}", ex2);
+  EXPECT_EQ(image_cf(cf, &s2.relabelling_A_elements[0], nullptr).str(ex2),
+            "{(fA2-e1, 2), (fA2-f1, 1)}");
+  EXPECT_EQ(image_cf(cf, &s2.mirror_A_elements[0], &s2.mirror_B_elements[0]), cf);
+  // Example 1: the ellipsoid and the dish move no element under any of their symmetries.
+  const SceneSymmetry s1 = SceneSymmetry::of(scene("example1.yaml"));
+  for (const ElementMap& m : s1.mirror_A_elements) EXPECT_TRUE(m.identity());
+  for (const ElementMap& m : s1.mirror_B_elements) EXPECT_TRUE(m.identity());
+  EXPECT_TRUE(s1.relabelling_A_elements.empty());
+}
+
 // Planes of mirror symmetry: the ellipsoid's three principal planes; the bowl's planes
 // through its axis (both coordinate planes holding z are found, no more); the lens's too, and
 // its equatorial plane (which exchanges its caps). Moving B moves its planes with it.
