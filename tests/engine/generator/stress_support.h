@@ -72,8 +72,9 @@ inline std::vector<std::string> sorted(std::vector<std::string> v) {
 // Every witness, re-checked by the exact contact computation, carries its state's CF and no
 // penetration, and its contacts are exact to 1e-10 L (the generator's own witness check).
 // Every link joins two states; an LN link never raises cardinality (Section II-D) and joins
-// CFs an LN hypothesis joins (Section III-A: some PtCs kept, some changed to neighbouring ones,
-// some removed; hypothesise_ln with every kind of plan): the generator's motions only arrive
+// CFs an LN hypothesis joins, in either direction between states of one cardinality (Section
+// III-A: some PtCs kept, some changed to neighbouring ones, some removed; hypothesise_ln with
+// every kind of plan): the generator's motions only arrive
 // at their hypotheses' CFs, so a link between other CFs came through a symmetry image read on
 // another CF (Example 2 far and rotated until session 49: {(fA2-e1, 2)} -> {(fA1-e1, 1)}, the
 // mirror image of a link from {(eA-e1, 1), (fA2-e1, 1)}, whose reflected witness read
@@ -94,9 +95,16 @@ inline void expect_witnesses_valid(const Generated& g) {
     if (l.kind != LinkKind::LN) continue;
     const State &from = g.graph.states[l.from], &to = g.graph.states[l.to];
     EXPECT_LE(to.cf.cardinality(), from.cf.cardinality());
-    bool hypothesised = false;
-    for (const Hypothesis& h : hypothesise_ln(g.scene, from.contacts, true))
-      hypothesised = hypothesised || h.cf == to.cf;
+    // (between states of one cardinality the reverse of a motion is an LN link too, add_link:
+    // {(fA1-eB, 1)} -> {(eA-eB, 1, touch)} reverses a motion from the touch, which no f-e
+    // hypothesis names, since an e-e PtC hypothesised from one is a crossing)
+    auto joins = [&](const State& x, const State& y) {
+      for (const Hypothesis& h : hypothesise_ln(g.scene, x.contacts, true))
+        if (h.cf == y.cf) return true;
+      return false;
+    };
+    const bool hypothesised =
+        joins(from, to) || (to.cf.cardinality() == from.cf.cardinality() && joins(to, from));
     EXPECT_TRUE(hypothesised) << "LN link " << from.cf.str(g.scene) << " -> " << to.cf.str(g.scene)
                               << " (" << l.motion << "): no LN hypothesis joins these CFs";
   }
