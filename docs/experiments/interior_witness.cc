@@ -18,15 +18,6 @@
 #include "engine/generator/symmetry.h"
 #include "engine/scene/scene.h"
 using namespace pcsg;
-static Pose parse(const char* t) {
-  std::istringstream in(t);
-  double v[7];
-  for (double& x : v) in >> x;
-  Pose p;
-  p.position = {v[0], v[1], v[2]};
-  p.quaternion = Eigen::Quaterniond(v[3], v[4], v[5], v[6]).normalized();
-  return p;
-}
 static double margin(const SceneGeometry& scene, const PointContact& c) {
   if (c.b.kind != ElementKind::Edge) return 1;
   const Solid& S = scene.B;
@@ -40,7 +31,7 @@ static double margin(const SceneGeometry& scene, const PointContact& c) {
 int main(int argc, char** argv) {
   SceneSpec spec = load_scene_file(argv[1]);
   const SceneGeometry scene = build_scene_geometry(spec);
-  const Pose a = parse(argv[2]), b = parse(argv[3]);
+  const Pose a = parse_pose(argv[2]), b = parse_pose(argv[3]);
   const ContactReport ra = detect_contacts(scene, a);
   const ContactFormation cf = ContactFormation::of(ra.contacts);
   const SceneSymmetry sym = SceneSymmetry::of(scene);

@@ -12,15 +12,6 @@
 #include "engine/generator/state_identity.h"
 #include "engine/scene/scene.h"
 using namespace pcsg;
-static Pose parse(const char* t) {
-  std::istringstream in(t);
-  double v[7];
-  for (double& x : v) in >> x;
-  Pose p;
-  p.position = {v[0], v[1], v[2]};
-  p.quaternion = Eigen::Quaterniond(v[3], v[4], v[5], v[6]).normalized();
-  return p;
-}
 int main(int argc, char** argv) {
   if (argc < 4) return 2;
   SceneSpec spec = load_scene_file(argv[1]);
@@ -32,7 +23,7 @@ int main(int argc, char** argv) {
     spec = moved_scene(spec, X);
   }
   const SceneGeometry scene = build_scene_geometry(spec);
-  const Pose a = parse(argv[2]), b = parse(argv[3]);
+  const Pose a = parse_pose(argv[2]), b = parse_pose(argv[3]);
   const ContactReport ra = detect_contacts(scene, a), rb = detect_contacts(scene, b);
   const ContactFormation cf = ContactFormation::of(ra.contacts);
   std::printf("a: %s (pen %d)  b: %s (pen %d)\n", cf.str(scene).c_str(), (int)ra.penetrating(),
