@@ -31,8 +31,8 @@ void expect_example2_signature(const std::string& file, const std::string& signa
 }
 
 // Example 2 scaled by 1e-4 and by 1e4 (example2_scaled_*.yaml), quick search (the default until
-// session 47): Example 2's stored signature. Passed in session 41's CI (~1,300 s each, two threads beside another test);
-// before that, from session 9 on, in the suite.
+// session 47): Example 2's stored signature. Passed in session 41's CI (~1,300 s each, two threads
+// beside another test); before that, from session 9 on, in the suite.
 TEST(Validation, Example2AtLengthUnit1eMinus4) {
   expect_example2_signature("example2_scaled_1e-4.yaml", "example2", false);
 }

@@ -172,7 +172,8 @@ TEST(Symmetry, ElementMapsOfTheShippedScenes) {
     EXPECT_EQ(name(m, "eA"), "eA");
   }
   EXPECT_EQ(exchanging, 1);  // the equatorial plane
-  EXPECT_TRUE(s2.mirror_A_elements[0].identity());  // the one mirror_image uses
+  // the plane mirror_image uses
+  EXPECT_TRUE(s2.mirror_A_elements[0].identity());
   ASSERT_EQ(s2.mirror_B_elements.size(), s2.mirrors_B.size());
   for (const ElementMap& m : s2.mirror_B_elements) EXPECT_TRUE(m.identity());
   const ContactFormation cf = ContactFormation::parse("{(fA1-e1, 2), (fA1-f1, 1)}", ex2);
