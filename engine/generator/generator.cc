@@ -1109,7 +1109,7 @@ void Builder::join_duplicate_states() {
   // The walk: each pair of states of one CF and region signature, unless already one state
   // (decided when the walk reaches the pair), is tried by parameter paths between each of the
   // first's witnesses and each of the second's, in order, until one joins them; then through
-  // a roadmap between their first witnesses. Each attempt is a pure function of the states'
+  // a roadmap between their first witnesses; then by a tangent walk between them. Each attempt is a pure function of the states'
   // witnesses (this phase adds none), so all of them run ahead on the worker threads
   // (ordered_pipeline), and the walk uses a result where it would have made the attempt, the
   // others dropped with their counters: neither depends on the thread count.
@@ -1119,7 +1119,7 @@ void Builder::join_duplicate_states() {
   };
   struct Attempt {
     size_t pair;
-    int path;  // witness pair i-th * (j's witnesses) + j-th, or -1: the roadmap
+    int path;  // witness pair i-th * (j's witnesses) + j-th; -1: the roadmap; -2: the walk
     MotionCounters counters;
     bool joined = false;
   };
@@ -1133,6 +1133,7 @@ void Builder::join_duplicate_states() {
       for (size_t k = 0; k < paths; ++k)
         attempts.push_back({pairs.size(), static_cast<int>(k), counters_.fresh()});
       attempts.push_back({pairs.size(), -1, counters_.fresh()});
+      attempts.push_back({pairs.size(), -2, counters_.fresh()});
       pairs.push_back({i, j});
     }
   StateWalk walk{*this, Phase::Identity, n};
@@ -1151,12 +1152,18 @@ void Builder::join_duplicate_states() {
         const ContactFormation& cf = graph_.states[p.i].cf;
         // Then through a roadmap of the region between the two states' own witnesses (joined
         // the duplicates of Example 1 swapped and of the needle that every path above missed).
-        a.joined =
-            a.path >= 0
-                ? joined_by_parameter_path(scene_, mi[a.path / mj.size()].pose,
-                                           mj[a.path % mj.size()].pose, cf, a.counters, symmetry_)
-                : joined_by_roadmap(scene_, mi[0].pose, mj[0].pose, cf, signatures_[p.i],
-                                    a.counters, nullptr, options_.threads);
+        // Last, a walk along the region's tangent space between them (joined the needle's
+        // far frame's duplicate that every join above missed).
+        if (a.path >= 0)
+          a.joined = joined_by_parameter_path(scene_, mi[a.path / mj.size()].pose,
+                                              mj[a.path % mj.size()].pose, cf, a.counters,
+                                              symmetry_);
+        else if (a.path == -1)
+          a.joined = joined_by_roadmap(scene_, mi[0].pose, mj[0].pose, cf, signatures_[p.i],
+                                       a.counters, nullptr, options_.threads);
+        else
+          a.joined = joined_by_tangent_walk(scene_, mi[0].pose, mj[0].pose, cf, a.counters,
+                                            symmetry_);
       },
       [&](size_t k) {
         const Attempt& a = attempts[k];

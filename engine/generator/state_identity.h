@@ -104,4 +104,19 @@ bool joined_by_roadmap(const SceneGeometry& scene, const Pose& a, const Pose& b,
                        const ContactFormation& cf, const RegionSignature& signature,
                        MotionCounters& counters, RoadmapStats* stats = nullptr, int threads = 1);
 
+// Whether the witnesses `a` and `b` of `cf` are joined by a walk on the CF's configurations
+// toward the other: from each witness, turned by the solids' symmetries toward the other
+// (aligned_by_symmetry), toward the other and each of its symmetric images, each
+// piece the twist toward the goal with the part that would change the contacts' conditions
+// taken out (their Jacobians), projected back onto `cf` from the contacts just left, and
+// reached from the piece before by connected_within_cf; the direct travel to the goal is tried
+// every few pieces. A piece that fails is halved; the walk stops where no piece brings it
+// nearer the goal. For regions too narrow for straight interpolation between poses (the
+// needle's {(fA-e1, 1), (fA-f1, 1)} far from the origin: every pose between the witnesses
+// left the CF, and projections from them landed on other branches of the tips' contacts).
+// Every piece is a checked motion, so `true` is a proof; `false` proves nothing.
+bool joined_by_tangent_walk(const SceneGeometry& scene, const Pose& a, const Pose& b,
+                            const ContactFormation& cf, MotionCounters& counters,
+                            const SceneSymmetry& symmetry = {});
+
 }  // namespace pcsg

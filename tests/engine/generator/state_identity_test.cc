@@ -73,5 +73,67 @@ TEST(StateIdentity, RoadmapJoinsTheNeedlesTwoRimAndWallWitnesses) {
            -2.1600698102067937e-05, 0.979523240991942, 0.14235488348453268));
 }
 
+// The needle's far frame (stress scene: B's frame 1.3e5 from the origin and rotated) held
+// {(fA-e1, 1), (fA-f1, 1)} twice (sessions 47-49), with the complete search: the tip on the
+// rim with the other tip near the dish's bottom, and the needle lying across the dish's top.
+// Session 48 showed them one region (both join the own frame's witness, moved there), but
+// every join before the tangent walk fails between them: the straight motions, the midpoints,
+// the parameter paths, the roadmap. Projections from poses a small piece off the CF start
+// their tip contacts from detection, which misses a penetrating tip, and land on another branch
+// (0.0015 L deep); the walk starts them from the contacts just left. Measured: joined with 568
+// collision queries (session 50).
+TEST(StateIdentity, TangentWalkJoinsTheFarNeedlesTwoRimAndWallWitnesses) {
+  const SceneGeometry scene = build_scene_geometry(load_scene_file(
+      std::string(PCSG_SOURCE_DIR) + "/scenes/stress/needle_far_rotated.yaml"));
+  const Pose a = pose(119999.41260182612, -50001.61559530288, 20000.00770252468,
+                      0.6627118796673848, -0.7062311976682716, 0.03380885918357511,
+                      0.24679428888948376);
+  const Pose b = pose(120001.15265350569, -50002.81144485555, 19999.535736571645,
+                      0.12646898196397824, -0.9350683648913268, -0.11698523081717857,
+                      -0.3097857410390398);
+  const ContactReport ra = detect_contacts(scene, a), rb = detect_contacts(scene, b);
+  ASSERT_FALSE(ra.penetrating());
+  ASSERT_FALSE(rb.penetrating());
+  const ContactFormation cf = ContactFormation::of(ra.contacts);
+  ASSERT_EQ(cf.str(scene), "{(fA-e1, 1), (fA-f1, 1)}");
+  ASSERT_TRUE(ContactFormation::of(rb.contacts) == cf);
+  const SceneSymmetry symmetry = SceneSymmetry::of(scene);
+  MotionCounters direct;
+  EXPECT_FALSE(joined_within_cf(scene, a, b, cf, direct, symmetry));
+  MotionCounters walked;
+  EXPECT_TRUE(joined_by_tangent_walk(scene, a, b, cf, walked, symmetry));
+  EXPECT_GT(walked.steps, 0);
+}
+
+// Example 1's two hands: {(fA-e1, 1), (fA-f1, 1)} and {(fA-e1, 2), (fA-f1, 1)} each twice,
+// mirror images across the plane y = 0. Session 17 found them two regions by sampling (61
+// witnesses of the 2-contact CF, each joining those of its own hand only; evidence, not a
+// proof: docs/paper-comparison.md), and Example 1's graph keeps both. A walk that joined them
+// would be the first path found between them, to be examined before any graph merged them.
+// Measured: 825 and 919 collision queries spent without a join (session 50).
+TEST(StateIdentity, TangentWalkDoesNotJoinExample1sMirrorHands) {
+  const SceneGeometry scene =
+      build_scene_geometry(load_scene_file(testing::scene_path("example1.yaml")));
+  const SceneSymmetry symmetry = SceneSymmetry::of(scene);
+  const std::pair<Pose, Pose> hands[] = {
+      {pose(-1.6051845970692638, 0.062473738619869046, 2.146389695652337, 0.3222040369265771,
+            -0.2493258235573032, 0.7620407517878649, 0.5033041673881464),
+       pose(-1.6051845970692638, -0.06247373861986905, 2.146389695652337, 0.5033041673881464,
+            0.7620407517878649, -0.2493258235573032, 0.3222040369265771)},
+      {pose(-2.343817497804932, -0.4617399322169134, 3.079596681620572, 0.1793461838818267,
+            -0.16531494405236488, 0.8617316732774343, 0.4448869956185087),
+       pose(-2.343817497804932, 0.4617399322169134, 3.079596681620572, 0.4448869956185087,
+            0.8617316732774343, -0.16531494405236488, 0.1793461838818267)}};
+  for (const auto& [a, b] : hands) {
+    const ContactReport ra = detect_contacts(scene, a), rb = detect_contacts(scene, b);
+    ASSERT_FALSE(ra.penetrating());
+    ASSERT_FALSE(rb.penetrating());
+    const ContactFormation cf = ContactFormation::of(ra.contacts);
+    ASSERT_TRUE(ContactFormation::of(rb.contacts) == cf) << cf.str(scene);
+    MotionCounters counters;
+    EXPECT_FALSE(joined_by_tangent_walk(scene, a, b, cf, counters, symmetry)) << cf.str(scene);
+  }
+}
+
 }  // namespace
 }  // namespace pcsg
