@@ -1107,9 +1107,12 @@ void Builder::join_duplicate_states() {
   PhaseScope phase(*this, Phase::Identity);
   const int n = static_cast<int>(graph_.states.size());
   // The walk: each pair of states of one CF and region signature, unless already one state
-  // (decided when the walk reaches the pair), is tried by parameter paths between each of the
-  // first's witnesses and each of the second's, in order, until one joins them; then through
-  // a roadmap between their first witnesses; then by a tangent walk between them. Each attempt is a pure function of the states'
+  // (decided when the walk reaches the pair), is tried by a tangent walk between their first
+  // witnesses (the cheapest: most that fail stop at their first piece), then by parameter
+  // paths between each of the first's witnesses and each of the second's, in order, until one
+  // joins them, then through a roadmap between their first witnesses. Every pair not joined
+  // through others gets every attempt, so the states joined do not depend on this order, only
+  // the queries spent (Example 1: 24,738 for state identity with the walk first, 26,910 last). Each attempt is a pure function of the states'
   // witnesses (this phase adds none), so all of them run ahead on the worker threads
   // (ordered_pipeline), and the walk uses a result where it would have made the attempt, the
   // others dropped with their counters: neither depends on the thread count.
@@ -1130,10 +1133,10 @@ void Builder::join_duplicate_states() {
       if (!(graph_.states[i].cf == graph_.states[j].cf) || signatures_[i] != signatures_[j])
         continue;
       const size_t paths = members_[i].size() * members_[j].size();
+      attempts.push_back({pairs.size(), -2, counters_.fresh()});
       for (size_t k = 0; k < paths; ++k)
         attempts.push_back({pairs.size(), static_cast<int>(k), counters_.fresh()});
       attempts.push_back({pairs.size(), -1, counters_.fresh()});
-      attempts.push_back({pairs.size(), -2, counters_.fresh()});
       pairs.push_back({i, j});
     }
   StateWalk walk{*this, Phase::Identity, n};
@@ -1150,10 +1153,10 @@ void Builder::join_duplicate_states() {
         const Pair& p = pairs[a.pair];
         const std::vector<Witness>&mi = members_[p.i], &mj = members_[p.j];
         const ContactFormation& cf = graph_.states[p.i].cf;
-        // Then through a roadmap of the region between the two states' own witnesses (joined
-        // the duplicates of Example 1 swapped and of the needle that every path above missed).
-        // Last, a walk along the region's tangent space between them (joined the needle's
-        // far frame's duplicate that every join above missed).
+        // The walk along the region's tangent space joined the needle's far frame's duplicate
+        // that every other join missed; the roadmap of the region between the two states' own
+        // witnesses, the duplicates of Example 1 swapped and of the needle that every path
+        // missed.
         if (a.path >= 0)
           a.joined = joined_by_parameter_path(scene_, mi[a.path / mj.size()].pose,
                                               mj[a.path % mj.size()].pose, cf, a.counters,
