@@ -140,6 +140,9 @@ TEST(Generator, Example2WitnessesAreExact) {
   // the complete search's signature (the default since session 47), also that of B moved
   // (Validation.Example2MovedWithTheCompleteSearch)
   testing::expect_stored_signature(testing::signature(g.graph, g.scene), "example2_complete");
+  // and as many states of each CF as the far frame's (session 50: 49 states)
+  testing::expect_stored_state_counts(testing::state_counts(g.graph, g.scene),
+                                      "example2_complete_states");
   expect_ruled_out_candidates_sound(g);
   const ElementId fA1 = g.scene.A.find("fA1"), fA2 = g.scene.A.find("fA2");
   std::set<std::string> cfs;

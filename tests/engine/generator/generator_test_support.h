@@ -110,4 +110,35 @@ inline void expect_stored_signature(const GraphSignature& have, const std::strin
                 << join(only(want.links, have.links));
 }
 
+// How many states each CF holds, one "count N <CF>" line per CF, sorted by CF: what a signature
+// does not see, a region left as two states by a failed join (Example 2's far frame held one
+// {(fA1-e1, 2)} more than its own frame until session 50).
+inline std::vector<std::string> state_counts(const StateGraph& g, const SceneGeometry& scene) {
+  std::map<std::string, int> n;
+  for (const State& st : g.states) ++n[st.cf.str(scene)];
+  std::vector<std::string> out;
+  for (const auto& [cf, k] : n) out.push_back("count " + std::to_string(k) + " " + cf);
+  return out;
+}
+
+// `have` equals the stored counts tests/data/signatures/<name>.txt (state_counts' lines; '#'
+// lines are comments); on a difference the lines only one side has are listed.
+inline void expect_stored_state_counts(const std::vector<std::string>& have,
+                                       const std::string& name) {
+  std::ifstream in(signature_file(name));
+  if (!in) throw std::runtime_error("cannot read " + signature_file(name));
+  std::vector<std::string> want;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#') want.push_back(line);
+  if (have == want) return;
+  std::vector<std::string> a = have, b = want, here, there;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(here));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(there));
+  ADD_FAILURE() << "the states per CF differ from " << signature_file(name) << "\nonly here:\n"
+                << join(here) << "only there:\n"
+                << join(there);
+}
+
 }  // namespace pcsg::testing
