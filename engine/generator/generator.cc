@@ -1270,15 +1270,22 @@ void Builder::add_relabelled_links() {
     }
   }
   if (cancelled()) return;
-  const std::vector<Link> links = graph_.links;
-  for (const Link& l : links) {
-    if (l.kind != LinkKind::LN) continue;
-    for (size_t k = 0; k < image[l.from].size(); ++k) {
-      const int from = image[l.from][k], to = image[l.to][k];
-      const bool mirrored = mirror && k + 1 == image[l.from].size();
-      if (from >= 0 && to >= 0)
-        add_link(from, to, l.motion + (mirrored ? ", mirrored" : ", relabelled"));
+  // The images of the links added here are links too (the mirror image of a relabelled link:
+  // the two symmetries composed), so the links are imaged until no new one comes. The states
+  // that image_state added have no images of their own (ids from n on).
+  for (size_t done = 0; done < graph_.links.size();) {
+    const size_t end = graph_.links.size();
+    for (size_t i = done; i < end; ++i) {
+      const Link l = graph_.links[i];  // (add_link appends to graph_.links)
+      if (l.kind != LinkKind::LN || l.from >= n || l.to >= n) continue;
+      for (size_t k = 0; k < image[l.from].size(); ++k) {
+        const int from = image[l.from][k], to = image[l.to][k];
+        const bool mirrored = mirror && k + 1 == image[l.from].size();
+        if (from >= 0 && to >= 0)
+          add_link(from, to, l.motion + (mirrored ? ", mirrored" : ", relabelled"));
+      }
     }
+    done = end;
   }
 }
 
