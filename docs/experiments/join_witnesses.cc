@@ -1,6 +1,6 @@
 // Session 40's join driver (not built by CMake): whether two witnesses of one CF are joined,
 // by each of the generator's joins (joined_within_cf, joined_by_parameter_path,
-// joined_by_roadmap). Build like replay_hypothesis.cc; run:
+// joined_by_tangent_walk since session 52, joined_by_roadmap). Build like replay_hypothesis.cc; run:
 //   /tmp/join scenes/example1.yaml "X Y Z QW QX QY QZ" "X Y Z QW QX QY QZ" [moved1|none] [LEVELS]
 // (poses X_BA as in graph.json; "moved1" moves B as generate_moved.cc does).
 #include <cstdio>
@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
                 (int)joined_within_cf(scene, a, b, cf, c1, sym, levels));
   std::printf("joined_by_parameter_path %d\n",
               (int)joined_by_parameter_path(scene, a, b, cf, c2, sym));
+  MotionCounters c5;
+  std::printf("joined_by_tangent_walk %d\n", (int)joined_by_tangent_walk(scene, a, b, cf, c5, sym));
   RoadmapStats st;
   {
     // the roadmap from a turned by the solids' symmetries toward b (every contact kept)
