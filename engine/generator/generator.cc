@@ -1256,19 +1256,42 @@ void Builder::add_relabelled_links() {
   if (!relabelling && !mirror) return;
   const int n = static_cast<int>(graph_.states.size());
   // image[id][k]: the state the k-th image of id's witness joins, or -1; the mirror image last.
+  // First each image is joined to the states there are (find_state), and none is added yet.
   std::vector<std::vector<int>> image(n);
+  std::vector<std::vector<std::optional<Discovery>>> images(n);
+  auto join = [&](int id, std::optional<Discovery> d) {
+    image[id].push_back(d ? find_state(d->cf, d->pose, d->contacts) : -1);
+    images[id].push_back(std::move(d));
+  };
   for (int id = 0; id < n && !cancelled(); ++id) {
     {
       PhaseScope phase(*this, Phase::Relabelling);
-      for (std::optional<Discovery>& d : relabelled_images(id))
-        image[id].push_back(image_state(id, d));
+      for (std::optional<Discovery>& d : relabelled_images(id)) join(id, std::move(d));
     }
     if (mirror) {
       PhaseScope phase(*this, Phase::Mirror);
-      const std::optional<Discovery> d = mirror_image(id);
-      image[id].push_back(image_state(id, d));
+      join(id, mirror_image(id));
     }
   }
+  if (cancelled()) return;
+  // Each symmetry here is an involution (a half turn, a mirror): where t's image joins s, the
+  // image of that join's motions joins s's image to t, so s's image is t whether or not a join
+  // from s's side proves it (session 52: Example 2 with B moved held {(eA-e1, 1), (fA1-f1, 1)}
+  // and its fA2 image three times each, the third an image that no join reached though its
+  // state's image had joined).
+  for (int t = 0; t < n; ++t)
+    for (size_t k = 0; k < image[t].size(); ++k) {
+      const int s = image[t][k];
+      if (s >= 0 && s < n && image[s][k] < 0 && images[s][k]) image[s][k] = t;
+    }
+  // The images that join no state: with the complete search each is a state (image_state).
+  for (int id = 0; id < n && !cancelled(); ++id)
+    for (size_t k = 0; k < image[id].size(); ++k)
+      if (image[id][k] < 0 && images[id][k]) {
+        PhaseScope phase(*this, mirror && k + 1 == image[id].size() ? Phase::Mirror
+                                                                    : Phase::Relabelling);
+        image[id][k] = image_state(id, images[id][k]);
+      }
   if (cancelled()) return;
   // The images of the links added here are links too (the mirror image of a relabelled link:
   // the two symmetries composed), so the links are imaged until no new one comes. The states
