@@ -1285,6 +1285,8 @@ void Builder::add_relabelled_links() {
       if (s >= 0 && s < n && image[s][k] < 0 && images[s][k]) image[s][k] = t;
     }
   // The images that join no state: with the complete search each is a state (image_state).
+  // image_state asks find_state again: the joins of pass one added witnesses to the states,
+  // and this pass adds states, either of which an image may join now.
   for (int id = 0; id < n && !cancelled(); ++id)
     for (size_t k = 0; k < image[id].size(); ++k)
       if (image[id][k] < 0 && images[id][k]) {
