@@ -1,5 +1,5 @@
-// pcsg generate SCENE [-o DIR] [--threads N] [--no-project-upward]: the point-contact state graph
-// of a scene.
+// pcsg generate SCENE [-o DIR] [--threads N] [--no-project-upward] [--region-samples]: the
+// point-contact state graph of a scene.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -60,6 +60,7 @@ struct Args {
   bool no_project_upward = false;
   bool no_mirror_images = false;
   bool quick = false;
+  bool region_samples = false;
   bool complete = false;  // the default since session 47; still accepted
 };
 
@@ -72,6 +73,7 @@ void run(const Args& a) {
   opt.project_upward = !a.no_project_upward;
   opt.mirror_images = !a.no_mirror_images;
   opt.complete_search = !a.quick;
+  opt.region_samples = a.region_samples;
   ProgressLine progress("pcsg generate", !a.quiet);
   const StateGraph g = generate_graph(scene, opt, &progress);
   progress.finish();
@@ -117,6 +119,10 @@ void setup(CLI::App& cli) {
                 "Try only the quick search's motions, each hypothesis's first two plans "
                 "(GeneratorOptions::complete_search off): about 1.7 times fewer collision "
                 "queries on Example 2, which then lacks 4 of its 33 CFs");
+  cmd->add_flag("--region-samples", args->region_samples,
+                "Retry the hypotheses toward CFs a state is not linked to also from 30 samples "
+                "of its region around its witness (GeneratorOptions::region_samples): the needle "
+                "in the dish gains 2 links at twice its queries, Example 2 nothing at 1.47 times");
   cmd->add_flag("--complete", args->complete,
                 "The complete search (the default): where the quick search's motions reach no "
                 "target, every kind of plan, settling wherever the new region ends and the "

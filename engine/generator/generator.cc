@@ -655,6 +655,15 @@ class Builder {
   // Reads only what that phase does not change (the states, their first witnesses and
   // signatures), and counts into `counters`: it runs on the worker threads.
   std::optional<Witness> waypoint(int id, int toward, double f, MotionCounters& counters) const;
+  // A witness of state `id` near its first one: that witness turned about or moved along one
+  // of A's axes (sample `i` of kRegionSamples), projected onto the state's CF, in the same
+  // region signature and joined to the witness by CF-compliant motions. The same reads and
+  // counting as waypoint.
+  std::optional<Witness> region_sample(int id, int i, MotionCounters& counters) const;
+  // Their common end: `start` projected onto state `id`'s CF, a witness of it when the
+  // projection has the state's CF and region signature, no penetration, and a CF-compliant
+  // motion joins it to the state's witness.
+  std::optional<Witness> witness_near(int id, const Pose& start, MotionCounters& counters) const;
 
   // Per state: the witnesses shown to lie in its region (its own first, then those of later
   // motions that ended there), a roadmap that later witnesses may join at any of its points;
@@ -1514,8 +1523,14 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f,
     const double angle = a.quaternion.angularDistance(s.pose.quaternion);
     if (angle < best) best = angle, target = a;
   }
+  return witness_near(id, between(s.pose, target, f), counters);
+}
+
+std::optional<Builder::Witness> Builder::witness_near(int id, const Pose& start,
+                                                      MotionCounters& counters) const {
+  const State& s = graph_.states[id];
   ++counters.detections;
-  const ProjectionResult proj = project_onto_cf(scene_, between(s.pose, target, f), s.cf);
+  const ProjectionResult proj = project_onto_cf(scene_, start, s.cf);
   if (!proj.ok) return std::nullopt;
   ++counters.detections;
   const ContactReport rep = detect_contacts(scene_, proj.pose);
@@ -1527,13 +1542,44 @@ std::optional<Builder::Witness> Builder::waypoint(int id, int toward, double f,
   return Witness{proj.pose, rep.contacts};
 }
 
+// The region samples of retry_missing_links: the state's witness turned about each of A's
+// axes through A's centre by +-kSampleTurns radians, and moved along each by +-kSampleShifts
+// of A's half-diagonal. They move with A, so they do not depend on B's frame or the unit.
+// Each size doubles or quadruples the one before, from about one motion step: a narrow region
+// keeps the small ones, a wide one lets the large ones leave the witness's neighbourhood
+// (GeneratorOptions::region_samples). Sized on the needle in the dish
+// (scenes/stress/needle_in_dish.yaml), whose own frame lacked {(fA-e1, 1), (fA-f1, 1)} ->
+// {(fA-f2, 1)}: the hypothesis fails from the region's witness and every waypoint, and
+// succeeds from a sample that, projected, lies 0.137 rad (about A's x axis, across the
+// needle) and 0.58 (4.5% of L) from the witness.
+constexpr std::array<double, 6> kSampleTurns = {0.15, -0.15, 0.3, -0.3, 0.6, -0.6};
+constexpr std::array<double, 4> kSampleShifts = {0.05, -0.05, 0.15, -0.15};
+constexpr int kRegionSamples = 3 * static_cast<int>(kSampleTurns.size() + kSampleShifts.size());
+
+std::optional<Builder::Witness> Builder::region_sample(int id, int i,
+                                                       MotionCounters& counters) const {
+  const State& s = graph_.states[id];
+  const int per_axis = static_cast<int>(kSampleTurns.size() + kSampleShifts.size());
+  const int axis = i / per_axis, k = i % per_axis;
+  const Eigen::Vector3d u = Eigen::Vector3d::Unit(axis);
+  Pose start = s.pose;
+  if (k < static_cast<int>(kSampleTurns.size())) {
+    start = turned_about_A(s.pose, {scene_.A.bbox.center(), u}, kSampleTurns[k]);
+  } else {
+    const double size = scene_.A.bbox.diagonal().norm() / 2;
+    start.position += s.pose.rotate(u * (kSampleShifts[k - kSampleTurns.size()] * size));
+  }
+  return witness_near(id, start, counters);
+}
+
 void Builder::retry_missing_links() {
   PhaseScope phase(*this, Phase::MissingLinks);
   const int n = static_cast<int>(graph_.states.size());
   // The walk: for each state and each of its hypotheses toward a CF the graph has but the
   // state has no link to (decided when the walk reaches it), attempts in order until one
   // links: the hypothesis from each of the state's other witnesses, then from waypoints
-  // halfway and three quarters of the way toward each state of that CF. The attempts'
+  // halfway and three quarters of the way toward each state of that CF, then from samples of
+  // the state's region around its witness (region_sample). The attempts'
   // motions (and waypoints) are pure functions of what this phase does not change, so they
   // run ahead on the worker threads (ordered_pipeline); the walk uses each result where it
   // would have made the attempt, and drops the others with their counters: the graph and the
@@ -1547,9 +1593,10 @@ void Builder::retry_missing_links() {
   };
   struct Attempt {
     size_t group;
-    int member = -1;  // the state's witness it starts from, or -1: a waypoint
+    int member = -1;  // the state's witness it starts from, or -1: a waypoint or a sample
     int target = -1;  // the waypoint's: toward this state,
     double f = 0;     // this fraction of the way
+    int sample = -1;  // or this region sample
     MotionCounters counters;
     std::optional<Witness> from;
     std::optional<TryResult> tried;  // none when the start has no hypothesis toward the CF
@@ -1563,11 +1610,13 @@ void Builder::retry_missing_links() {
         if (t.cf == h.cf) g.targets.push_back(t.id);
       if (g.targets.empty() || linked_to_cf(id, h.cf)) continue;  // links are never removed
       for (size_t k = 1; k < g.members; ++k)  // (a copy: the walk may add witnesses meanwhile)
-        attempts.push_back(
-            {groups.size(), static_cast<int>(k), -1, 0, counters_.fresh(), members_[id][k], {}});
+        attempts.push_back({groups.size(), static_cast<int>(k), -1, 0, -1, counters_.fresh(),
+                            members_[id][k], {}});
       for (int t : g.targets)
         for (double f : {0.5, 0.75})
-          attempts.push_back({groups.size(), -1, t, f, counters_.fresh(), {}, {}});
+          attempts.push_back({groups.size(), -1, t, f, -1, counters_.fresh(), {}, {}});
+      for (int i = 0; i < (options_.region_samples ? kRegionSamples : 0); ++i)
+        attempts.push_back({groups.size(), -1, -1, 0, i, counters_.fresh(), {}, {}});
       groups.push_back(std::move(g));
     }
   // From `from` (a pose of the group's state's region), the first hypothesis toward its CF.
@@ -1615,7 +1664,8 @@ void Builder::retry_missing_links() {
         Attempt& a = attempts[j];
         const Group& g = groups[a.group];
         if (a.member < 0) {
-          a.from = waypoint(g.id, a.target, a.f, a.counters);
+          a.from = a.sample < 0 ? waypoint(g.id, a.target, a.f, a.counters)
+                                : region_sample(g.id, a.sample, a.counters);
           if (!a.from) return;
         }
         a.tried = try_from(g, *a.from, a.counters);

@@ -50,6 +50,14 @@ struct GeneratorOptions {
   // has the 33 CFs but lacks 24 or 4 of the 211 links, at 1.47 and 1.63 times the queries;
   // with the general settling alone 31 CFs; docs/paper-comparison.md, sessions 40 and 47).
   bool complete_search = true;
+  // Retry the hypotheses toward a CF the graph has but a state has no link to also from
+  // samples of the state's region around its witness (the witness turned about and moved along
+  // A's axes, projected onto the CF and joined to it: region_sample in generator.cc), after the
+  // other witnesses and the waypoints fail. Off by default (session 55): it adds two real links
+  // to the needle in the dish (scenes/stress/needle_in_dish.yaml, 26 to 28; its far frame
+  // also 26 to 28, another two) at about twice its queries, and nothing to Example 1 (no query)
+  // or Example 2 (the same 49 states and 604 links at 1.47 times the queries).
+  bool region_samples = false;
   // Safety bound on the number of states (a valid scene has far fewer).
   int max_states = 2000;
   // Length of one small motion step relative to the scene's length scale; 0 keeps the scene's

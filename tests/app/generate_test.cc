@@ -105,6 +105,33 @@ TEST(GenerateCommand, QuickFlagTriesOnlyTheFirstTwoPlans) {
   EXPECT_NE(both.out.find("--complete"), std::string::npos) << both.out;
 }
 
+// --region-samples sets GeneratorOptions::region_samples: the needle in the dish then holds the
+// link {(fA-e1, 1), (fA-f1, 1)} -> {(fA-f2, 1)} and its reverse, 28 links (26 without;
+// StressShapes.NeedleInTheDishWithRegionSamples).
+TEST(GenerateCommand, RegionSamplesFlagAddsTheNeedlesMissingLink) {
+  const std::string scene = std::string(PCSG_SOURCE_DIR) + "/scenes/stress/needle_in_dish.yaml";
+  const fs::path dir = fresh_dir("region_samples");
+  const ExeRun r = run_pcsg("generate -q --region-samples " + scene + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("8 states, 28 links"), std::string::npos) << r.out;
+  const json g = graph_without_time(dir);
+  // a state's CF as "fA-e1 x1, fA-f1 x1" (its PtCs in the JSON's order)
+  auto cf_of = [&](int id) {
+    std::string out;
+    for (const json& e : g["states"][id]["cf"])
+      out += (out.empty() ? "" : ", ") + e["a"].get<std::string>() + "-" +
+             e["b"].get<std::string>() + " x" + std::to_string(e["count"].get<int>());
+    return out;
+  };
+  int found = 0;
+  for (const json& l : g["links"]) {
+    const std::string from = cf_of(l["from"].get<int>()), to = cf_of(l["to"].get<int>());
+    found += (from == "fA-f1 x1, fA-e1 x1" || from == "fA-e1 x1, fA-f1 x1") && to == "fA-f2 x1" &&
+             l["kind"] == "LN";
+  }
+  EXPECT_EQ(found, 1) << "one LN link from the rim-and-wall state to the one on f2";
+}
+
 TEST(GenerateCommand, RejectsAThreadCountOutOfRange) {
   const ExeRun r = run_pcsg("generate " + example1() + " -j 0 -o " + fresh_dir("bad").string(),
                             /*merge_stderr=*/true);
