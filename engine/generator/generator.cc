@@ -1545,9 +1545,9 @@ std::optional<Builder::Witness> Builder::witness_near(int id, const Pose& start,
 // The region samples of retry_missing_links: the state's witness turned about each of A's
 // axes through A's centre by +-kSampleTurns radians, and moved along each by +-kSampleShifts
 // of A's half-diagonal. They move with A, so they do not depend on B's frame or the unit.
-// Each size doubles or quadruples the one before, from about one motion step: a narrow region
-// keeps the small ones, a wide one lets the large ones leave the witness's neighbourhood
-// (GeneratorOptions::region_samples). Sized on the needle in the dish
+// Each size is two or three times the one before (on the needle the smallest shift is about
+// one motion step): a narrow region keeps the small ones, a wide one lets the large ones leave
+// the witness's neighbourhood (GeneratorOptions::region_samples). Sized on the needle in the dish
 // (scenes/stress/needle_in_dish.yaml), whose own frame lacked {(fA-e1, 1), (fA-f1, 1)} ->
 // {(fA-f2, 1)}: the hypothesis fails from the region's witness and every waypoint, and
 // succeeds from a sample that, projected, lies 0.137 rad (about A's x axis, across the
