@@ -251,49 +251,57 @@ BoxTree box_tree(const Model& model) {
   return tree;
 }
 
-// Lane `l` of `from` in both lanes.
-template <typename Boxes>
-Boxes both_lanes(const Boxes& from, int l) {
-  constexpr size_t n = sizeof(Boxes) / sizeof(Lanes);
-  const Lanes* src = reinterpret_cast<const Lanes*>(&from);
-  Boxes to;
-  Lanes* dst = reinterpret_cast<Lanes*>(&to);
-  if (l)
-    for (size_t m = 0; m < n; ++m) dst[m] = Lanes{src[m][1], src[m][1]};
+// Lane `L` of x in both lanes, or x itself for L < 0 (both lanes as stored).
+template <int L>
+inline Lanes lanes_of(Lanes x) {
+  if constexpr (L < 0)
+    return x;
   else
-    for (size_t m = 0; m < n; ++m) dst[m] = Lanes{src[m][0], src[m][0]};
-  return to;
+    return Lanes{x[L], x[L]};
 }
 
 // Lane by lane, whether box a of A and box b of B (placed in A's frame) are more than `margin`
 // apart: by their balls (beyond round-off), or on a face axis of either box (the first six tests
 // of FCL's obbDisjoint, with its slack, a grown by the margin). Bit l of the result: lane l.
-int lanes_apart(const BoxLanes& a, const BoxSizeLanes& as, const BoxLanes& b,
-                const BoxSizeLanes& bs, double margin) {
+// LA (LB) >= 0 reads lane LA (LB) of a's (b's) block in both lanes: one box against the two of
+// the other block, broadcast where it is read instead of copied out first.
+template <int LA = -1, int LB = -1>
+inline __attribute__((always_inline)) int lanes_apart(const BoxLanes& a, const BoxSizeLanes& as,
+                                                      const BoxLanes& b, const BoxSizeLanes& bs,
+                                                      double margin) {
   constexpr double reps = 1e-6;  // FCL's slack on the rotation's entries
+  Lanes ac[3], bc[3];
+  for (int k = 0; k < 3; ++k) {
+    ac[k] = lanes_of<LA>(a.centre[k]);
+    bc[k] = lanes_of<LB>(b.centre[k]);
+  }
   Lanes d[3];
-  for (int k = 0; k < 3; ++k) d[k] = b.centre[k] - a.centre[k];
-  const Lanes r = as.ball + bs.ball + margin;
-  const Lanes centres =
-      (b.centre[0] * b.centre[0] + b.centre[1] * b.centre[1] + b.centre[2] * b.centre[2]) +
-      (a.centre[0] * a.centre[0] + a.centre[1] * a.centre[1] + a.centre[2] * a.centre[2]);
+  for (int k = 0; k < 3; ++k) d[k] = bc[k] - ac[k];
+  const Lanes r = lanes_of<LA>(as.ball) + lanes_of<LB>(bs.ball) + margin;
+  const Lanes centres = (bc[0] * bc[0] + bc[1] * bc[1] + bc[2] * bc[2]) +
+                        (ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2]);
   LaneMask apart = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >
                    r * r * (1 + kBallRoundOff) + kBallRoundOff * centres;
   if (apart[0] && apart[1]) return 3;
   // Rab(i, j) = a's axis i . b's axis j, Tab(i) = a's axis i . d: b placed in a's frame;
   // FCL's slack enters as reps times the sum of the other box's extents.
+  Lanes bx[9];
+  for (int m = 0; m < 9; ++m) bx[m] = lanes_of<LB>(b.axis[m]);
   Lanes Rab[9], Rabs[9], Tab[3];
   for (int i = 0; i < 3; ++i) {
-    const Lanes* ai = a.axis + 3 * i;
+    const Lanes ai[3] = {lanes_of<LA>(a.axis[3 * i]), lanes_of<LA>(a.axis[3 * i + 1]),
+                         lanes_of<LA>(a.axis[3 * i + 2])};
     Tab[i] = ai[0] * d[0] + ai[1] * d[1] + ai[2] * d[2];
     for (int j = 0; j < 3; ++j) {
-      const Lanes* bj = b.axis + 3 * j;
+      const Lanes* bj = bx + 3 * j;
       Rab[3 * i + j] = ai[0] * bj[0] + ai[1] * bj[1] + ai[2] * bj[2];
       Rabs[3 * i + j] = lane_abs(Rab[3 * i + j]);
     }
   }
-  const Lanes ea[3] = {as.extent[0] + margin, as.extent[1] + margin, as.extent[2] + margin};
-  const Lanes* eb = bs.extent;
+  const Lanes ea[3] = {lanes_of<LA>(as.extent[0]) + margin, lanes_of<LA>(as.extent[1]) + margin,
+                       lanes_of<LA>(as.extent[2]) + margin};
+  const Lanes eb[3] = {lanes_of<LB>(bs.extent[0]), lanes_of<LB>(bs.extent[1]),
+                       lanes_of<LB>(bs.extent[2])};
   const Lanes slack_a = reps * (eb[0] + eb[1] + eb[2]), slack_b = reps * (ea[0] + ea[1] + ea[2]);
   for (int i = 0; i < 3; ++i)
     apart |= lane_abs(Tab[i]) > ea[i] + (Rabs[3 * i] * eb[0] + Rabs[3 * i + 1] * eb[1] +
@@ -387,13 +395,17 @@ bool traverse(const BoxTree& tree_A, const BoxTree& tree_B, PlacedBoxes& placed,
     int apart, c0, c1;
     if (split_A) {
       const int k = tree_A.children(a), kb = tree_B.block_of(b), lb = BoxTree::lane_of(b);
-      apart = lanes_apart(tree_A.boxes[k], tree_A.sizes[k], both_lanes(placed[kb], lb),
-                          both_lanes(tree_B.sizes[kb], lb), margin);
+      const BoxLanes& pb = placed[kb];
+      apart =
+          lb ? lanes_apart<-1, 1>(tree_A.boxes[k], tree_A.sizes[k], pb, tree_B.sizes[kb], margin)
+             : lanes_apart<-1, 0>(tree_A.boxes[k], tree_A.sizes[k], pb, tree_B.sizes[kb], margin);
       c0 = na.first_child;
     } else {
       const int k = tree_B.children(b), ka = tree_A.block_of(a), la = BoxTree::lane_of(a);
-      apart = lanes_apart(both_lanes(tree_A.boxes[ka], la), both_lanes(tree_A.sizes[ka], la),
-                          placed[k], tree_B.sizes[k], margin);
+      const BoxLanes& pb = placed[k];
+      apart =
+          la ? lanes_apart<1, -1>(tree_A.boxes[ka], tree_A.sizes[ka], pb, tree_B.sizes[k], margin)
+             : lanes_apart<0, -1>(tree_A.boxes[ka], tree_A.sizes[ka], pb, tree_B.sizes[k], margin);
       c0 = nb.first_child;
     }
     c1 = c0 + 1;

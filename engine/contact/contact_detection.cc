@@ -356,6 +356,9 @@ Regions collect_regions(const ContactContext& ctx, const Pose& X_BA,
   Regions out;
   out.region_of.assign(pairs.size(), -1);
   std::vector<int> region_index(pairs.size(), -1);
+  // group_pairs sorted the pairs by A's triangle: its centroid placed once per run of pairs.
+  int placed_tA = -1;
+  Eigen::Vector3d placed_centroid = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < pairs.size(); ++i) {
     const int root = group[i];
     if (region_index[root] < 0) {
@@ -365,7 +368,11 @@ Regions collect_regions(const ContactContext& ctx, const Pose& X_BA,
     out.region_of[i] = region_index[root];
     auto& cands = out.candidates[out.region_of[i]];
     const auto [tA, tB] = pairs[i];
-    const double d = (X_BA.apply(iA.centroids[tA]) - iB.centroids[tB]).norm();
+    if (tA != placed_tA) {
+      placed_tA = tA;
+      placed_centroid = X_BA.apply(iA.centroids[tA]);
+    }
+    const double d = (placed_centroid - iB.centroids[tB]).norm();
     for (int ka = iA.element_offsets[tA]; ka < iA.element_offsets[tA + 1]; ++ka)
       for (int kb = iB.element_offsets[tB]; kb < iB.element_offsets[tB + 1]; ++kb) {
         const ElementId a = iA.elements[ka], b = iB.elements[kb];

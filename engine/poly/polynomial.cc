@@ -11,11 +11,11 @@
 namespace pcsg {
 namespace {
 
-// Exponent table and reverse index, built once.
+// Exponent table and reverse index, built at compile time (no guard on the evaluations' path).
 struct MonomialTable {
   std::array<std::array<int, 3>, Polynomial::kNumCoeffs> exps{};
-  int idx[5][5][5];
-  MonomialTable() {
+  int idx[5][5][5]{};
+  constexpr MonomialTable() {
     int n = 0;
     for (int d = 0; d <= Polynomial::kMaxDegree; ++d)
       for (int i = d; i >= 0; --i)
@@ -27,10 +27,9 @@ struct MonomialTable {
   }
 };
 
-const MonomialTable& table() {
-  static const MonomialTable t;
-  return t;
-}
+constexpr MonomialTable kTable;
+
+constexpr const MonomialTable& table() { return kTable; }
 
 }  // namespace
 
