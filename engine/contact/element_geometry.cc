@@ -26,13 +26,13 @@ SurfaceJet SurfaceJet::at(const Polynomial& g, const Eigen::Vector3d& p) {
   SurfaceJet j;
   g.evaluate(p, &j.value, &j.gradient, &j.hessian);
   j.gradient_norm = j.gradient.norm();
-  if (j.gradient_norm > 0) {
-    j.normal = j.gradient / j.gradient_norm;
-    j.normal_derivative =
-        (Eigen::Matrix3d::Identity() - j.normal * j.normal.transpose()) * j.hessian /
-        j.gradient_norm;
-  }
+  if (j.gradient_norm > 0) j.normal = j.gradient / j.gradient_norm;
   return j;
+}
+
+Eigen::Matrix3d SurfaceJet::normal_derivative() const {
+  if (!(gradient_norm > 0)) return Eigen::Matrix3d::Zero();
+  return (Eigen::Matrix3d::Identity() - normal * normal.transpose()) * hessian / gradient_norm;
 }
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {

@@ -19,9 +19,11 @@ struct SurfaceJet {
   Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();
   double gradient_norm = 0;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d normal_derivative = Eigen::Matrix3d::Zero();
 
   static SurfaceJet at(const Polynomial& g, const Eigen::Vector3d& p);
+  // dn/dp, zero where grad g is. Formed on demand: the edge systems take only the gradients
+  // and Hessians of their two surfaces (CurveJet), and most jets are theirs.
+  Eigen::Matrix3d normal_derivative() const;
   // g / |grad g|: the first-order signed distance to g = 0 (> 0 outside).
   double distance_estimate() const { return value / gradient_norm; }
   // Normal curvature along the unit tangent t, positive where the face bends away from its

@@ -1,8 +1,10 @@
 #include "engine/contact/newton_solver.h"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+
+#include "engine/contact/small_solvers.h"
 
 namespace pcsg {
 namespace {
@@ -48,27 +50,30 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
   const int n = system.size();
   SmallVector cs(n);
   system.unknown_scales(cs);
-  State cur, trial;
-  evaluate(system, z, L, cur);
+  // The current point and the trial, swapped by pointer when a step is accepted.
+  State states[2];
+  State* cur = &states[0];
+  State* trial = &states[1];
+  evaluate(system, z, L, *cur);
   NewtonResult result;
   bool polishing = false;
   double damping = 0;  // relative LM damping, carried between iterations (0: not yet used)
   for (int it = 0; it < options.max_iterations; ++it) {
     result.iterations = it;
-    if (cur.residual <= options.residual) {
+    if (cur->residual <= options.residual) {
       if (polishing) break;
       polishing = true;  // one more Newton step takes the solution to round-off
     }
     // Dimensionless system: rows in units of L, unknowns in units of their scales.
-    const SmallVector Ft = cur.F.cwiseProduct(cur.rs) / L;
-    SmallMatrix Jt = (cur.rs / L).asDiagonal() * cur.J * cs.asDiagonal();
+    const SmallVector Ft = cur->F.cwiseProduct(cur->rs) / L;
+    SmallMatrix Jt = (cur->rs / L).asDiagonal() * cur->J * cs.asDiagonal();
     // A step, clipped to the step bound, is accepted when it lowers the merit.
     auto try_step = [&](SmallVector step) {
       if (!step.allFinite()) return false;
       const double big = step.cwiseAbs().maxCoeff();
       if (big > options.max_step) step *= options.max_step / big;
-      evaluate(system, cur.z + cs.cwiseProduct(step), L, trial);
-      return trial.merit < cur.merit;
+      evaluate(system, cur->z + cs.cwiseProduct(step), L, *trial);
+      return trial->merit < cur->merit;
     };
     // A rejected step v bent along the solution curve (second-order correction, geodesic
     // acceleration with the trial point as its difference): v + a / 2, where a takes the
@@ -78,12 +83,12 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
     // so without the bend only short steps are accepted and the solve crawls.
     auto try_bent = [&](const auto& solve) {
       if (polishing) return false;  // at round-off already: nothing to bend
-      if (!trial.z.allFinite() || !std::isfinite(trial.merit)) return false;
-      const SmallVector v = (trial.z - cur.z).cwiseQuotient(cs);  // as taken (clipped)
-      const SmallVector curvature = trial.F.cwiseProduct(cur.rs) / L - Ft - Jt * v;
+      if (!trial->z.allFinite() || !std::isfinite(trial->merit)) return false;
+      const SmallVector v = (trial->z - cur->z).cwiseQuotient(cs);  // as taken (clipped)
+      const SmallVector curvature = trial->F.cwiseProduct(cur->rs) / L - Ft - Jt * v;
       return try_step(v + solve(curvature));
     };
-    const auto lu = Jt.partialPivLu();
+    const SmallLu lu(Jt);  // Eigen's partialPivLu, bit for bit, without its set-up
     const SmallVector newton = -lu.solve(Ft);
     bool accepted = try_step(newton) ||
                     try_bent([&](const SmallVector& r) { return SmallVector(-lu.solve(r)); });
@@ -97,7 +102,7 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
       while (!accepted && damping <= kMaxDamping) {
         SmallMatrix A = JtJ;
         A.diagonal().array() += damping * scale;
-        const auto ldlt = A.ldlt();
+        const SmallLdlt ldlt(A);  // Eigen's ldlt, bit for bit, without its set-up
         const SmallVector v = -ldlt.solve(g);
         accepted = try_step(v) || try_bent([&](const SmallVector& r) {
                      return SmallVector(-ldlt.solve(Jt.transpose() * r));
@@ -108,9 +113,9 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
     if (!accepted) break;  // stuck: converged already (polishing) or a failed solve
     std::swap(cur, trial);
   }
-  z = cur.z;
-  result.residual = cur.residual;
-  result.converged = cur.residual <= options.residual;
+  z = cur->z;
+  result.residual = cur->residual;
+  result.converged = cur->residual <= options.residual;
   return result;
 }
 

@@ -11,6 +11,7 @@ void PairSystem::evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix& 
   const Eigen::Vector3d p_A = z.segment<3>(0), p_B = z.segment<3>(3);
   const double s = z[6], k = z[7];
   const SurfaceJet ja = SurfaceJet::at(ga(0), p_A), jb = SurfaceJet::at(gb(0), p_B);
+  const Eigen::Matrix3d dn_b = jb.normal_derivative();
   const Eigen::Matrix3d& R = s_.R;
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   // g_a(p_A) = 0, g_b(p_B) = 0.
@@ -23,13 +24,13 @@ void PairSystem::evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix& 
   // x_A - p_B - s n_b = 0: the points are joined along B's normal.
   F.segment<3>(2) = R * p_A + s_.t - p_B - s * jb.normal;
   J.block<3, 3>(2, 0) = R;
-  J.block<3, 3>(2, 3) = -I - s * jb.normal_derivative;
+  J.block<3, 3>(2, 3) = -I - s * dn_b;
   J.block<3, 1>(2, 6) = -jb.normal;
   rs.segment<3>(2).setOnes();
   // R n_a + k n_b = 0: the normals are parallel (k = 1 when opposite, as in a contact).
   F.segment<3>(5) = R * ja.normal + k * jb.normal;
-  J.block<3, 3>(5, 0) = R * ja.normal_derivative;
-  J.block<3, 3>(5, 3) = k * jb.normal_derivative;
+  J.block<3, 3>(5, 0) = R * ja.normal_derivative();
+  J.block<3, 3>(5, 3) = k * dn_b;
   J.block<3, 1>(5, 7) = jb.normal;
   rs.segment<3>(5).setConstant(s_.length_scale);
 }
@@ -39,6 +40,7 @@ void PairSystem::evaluate_fe(const SmallVector& z, SmallVector& F, SmallMatrix& 
   const Eigen::Vector3d p_A = z.segment<3>(0), p_B = z.segment<3>(3);
   const double s = z[6];
   const SurfaceJet ja = SurfaceJet::at(ga(0), p_A);
+  const Eigen::Matrix3d dn_a = ja.normal_derivative();
   const SurfaceJet jb1 = SurfaceJet::at(gb(0), p_B), jb2 = SurfaceJet::at(gb(1), p_B);
   const CurveJet cb = CurveJet::of(jb1, jb2);
   const Eigen::Matrix3d& R = s_.R;
@@ -53,14 +55,14 @@ void PairSystem::evaluate_fe(const SmallVector& z, SmallVector& F, SmallMatrix& 
   rs[2] = 1 / jb2.gradient_norm;
   // x_A - p_B + s R n_a = 0: joined along A's normal (n = -R n_a points from B toward A).
   F.segment<3>(3) = R * p_A + s_.t - p_B + s * (R * ja.normal);
-  J.block<3, 3>(3, 0) = R + s * R * ja.normal_derivative;
+  J.block<3, 3>(3, 0) = R + s * R * dn_a;
   J.block<3, 3>(3, 3) = -Eigen::Matrix3d::Identity();
   J.block<3, 1>(3, 6) = R * ja.normal;
   rs.segment<3>(3).setOnes();
   // n_a . R^T c_b = 0: A's normal is normal to B's edge tangent c_b = grad g_b1 x grad g_b2.
   const Eigen::Vector3d c_in_A = R.transpose() * cb.c;
   F[6] = ja.normal.dot(c_in_A);
-  J.row(6).segment<3>(0) = ja.normal_derivative.transpose() * c_in_A;
+  J.row(6).segment<3>(0) = dn_a.transpose() * c_in_A;
   J.row(6).segment<3>(3) = cb.dc.transpose() * (R * ja.normal);
   rs[6] = s_.length_scale / cb.c.norm();
 }
@@ -71,6 +73,7 @@ void PairSystem::evaluate_ef(const SmallVector& z, SmallVector& F, SmallMatrix& 
   const double s = z[6];
   const SurfaceJet ja1 = SurfaceJet::at(ga(0), p_A), ja2 = SurfaceJet::at(ga(1), p_A);
   const SurfaceJet jb = SurfaceJet::at(gb(0), p_B);
+  const Eigen::Matrix3d dn_b = jb.normal_derivative();
   const CurveJet ca = CurveJet::of(ja1, ja2);
   const Eigen::Matrix3d& R = s_.R;
   F[0] = ja1.value;
@@ -85,14 +88,14 @@ void PairSystem::evaluate_ef(const SmallVector& z, SmallVector& F, SmallMatrix& 
   // x_A - p_B - s n_b = 0.
   F.segment<3>(3) = R * p_A + s_.t - p_B - s * jb.normal;
   J.block<3, 3>(3, 0) = R;
-  J.block<3, 3>(3, 3) = -Eigen::Matrix3d::Identity() - s * jb.normal_derivative;
+  J.block<3, 3>(3, 3) = -Eigen::Matrix3d::Identity() - s * dn_b;
   J.block<3, 1>(3, 6) = -jb.normal;
   rs.segment<3>(3).setOnes();
   // n_b . R c_a = 0: B's normal is normal to A's edge tangent.
   const Eigen::Vector3d c_in_B = R * ca.c;
   F[6] = jb.normal.dot(c_in_B);
   J.row(6).segment<3>(0) = ca.dc.transpose() * (R.transpose() * jb.normal);
-  J.row(6).segment<3>(3) = jb.normal_derivative.transpose() * c_in_B;
+  J.row(6).segment<3>(3) = dn_b.transpose() * c_in_B;
   rs[6] = s_.length_scale / ca.c.norm();
 }
 
@@ -107,7 +110,7 @@ void PairSystem::evaluate_fv(const SmallVector& z, SmallVector& F, SmallMatrix& 
   rs[0] = 1 / ja.gradient_norm;
   // x_A - v_B + s R n_a = 0: B's vertex projected onto A's face.
   F.segment<3>(1) = R * p_A + s_.t - vertex_B_ + s * (R * ja.normal);
-  J.block<3, 3>(1, 0) = R + s * R * ja.normal_derivative;
+  J.block<3, 3>(1, 0) = R + s * R * ja.normal_derivative();
   J.block<3, 1>(1, 3) = R * ja.normal;
   rs.segment<3>(1).setOnes();
 }
@@ -122,7 +125,7 @@ void PairSystem::evaluate_vf(const SmallVector& z, SmallVector& F, SmallMatrix& 
   rs[0] = 1 / jb.gradient_norm;
   // x_A - p_B - s n_b = 0: A's vertex projected onto B's face.
   F.segment<3>(1) = s_.R * vertex_A_ + s_.t - p_B - s * jb.normal;
-  J.block<3, 3>(1, 0) = -Eigen::Matrix3d::Identity() - s * jb.normal_derivative;
+  J.block<3, 3>(1, 0) = -Eigen::Matrix3d::Identity() - s * jb.normal_derivative();
   J.block<3, 1>(1, 3) = -jb.normal;
   rs.segment<3>(1).setOnes();
 }
