@@ -22,9 +22,9 @@ Eigen::VectorXd least_squares(const Eigen::Matrix<double, 3, Eigen::Dynamic>& N,
 
 }  // namespace
 
-SurfaceJet SurfaceJet::at(const Polynomial& g, const Eigen::Vector3d& p) {
+SurfaceJet SurfaceJet::at(const Polynomial& g, const Eigen::Vector3d& p, bool with_hessian) {
   SurfaceJet j;
-  g.evaluate(p, &j.value, &j.gradient, &j.hessian);
+  g.evaluate(p, &j.value, &j.gradient, with_hessian ? &j.hessian : nullptr);
   j.gradient_norm = j.gradient.norm();
   if (j.gradient_norm > 0) j.normal = j.gradient / j.gradient_norm;
   return j;
@@ -41,14 +41,15 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return m;
 }
 
-CurveJet CurveJet::of(const SurfaceJet& j1, const SurfaceJet& j2) {
+CurveJet CurveJet::of(const SurfaceJet& j1, const SurfaceJet& j2, bool with_derivatives) {
   CurveJet c;
   c.c = j1.gradient.cross(j2.gradient);
+  const double n = c.c.norm();
+  if (n > 0) c.tangent = c.c / n;
+  if (!with_derivatives) return c;
   // d(a x b) = da x b + a x db = -[b]x H1 dp + [a]x H2 dp.
   c.dc = -skew(j2.gradient) * j1.hessian + skew(j1.gradient) * j2.hessian;
-  const double n = c.c.norm();
   if (n > 0) {
-    c.tangent = c.c / n;
     const Eigen::Vector3d dcds = c.dc * c.tangent;
     c.curvature = (dcds - c.tangent * c.tangent.dot(dcds)) / n;
   }

@@ -20,7 +20,9 @@ struct SurfaceJet {
   double gradient_norm = 0;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 
-  static SurfaceJet at(const Polynomial& g, const Eigen::Vector3d& p);
+  // Without the Hessian (left zero) when `with_hessian` is false: the value, gradient and
+  // normal are the same bits either way (a Newton trial reads no more, newton_solver.h).
+  static SurfaceJet at(const Polynomial& g, const Eigen::Vector3d& p, bool with_hessian = true);
   // dn/dp, zero where grad g is. Formed on demand: the edge systems take only the gradients
   // and Hessians of their two surfaces (CurveJet), and most jets are theirs.
   Eigen::Matrix3d normal_derivative() const;
@@ -41,7 +43,9 @@ struct CurveJet {
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();
   Eigen::Vector3d curvature = Eigen::Vector3d::Zero();
 
-  static CurveJet of(const SurfaceJet& j1, const SurfaceJet& j2);
+  // Without dc and the curvature (left zero) when `with_derivatives` is false: c and the
+  // tangent read only the gradients.
+  static CurveJet of(const SurfaceJet& j1, const SurfaceJet& j2, bool with_derivatives = true);
   // d(unit tangent)/dp = (I - t t^T) dc / |c|.
   Eigen::Matrix3d tangent_derivative() const;
 };

@@ -29,13 +29,19 @@ constexpr double kMaxDamping = 1e8;
 struct State {
   SmallVector z, F, rs;
   SmallMatrix J;
-  double merit = 0;     // |F .* rs|^2 / L^2
-  double residual = 0;  // max |F .* rs|
+  bool has_jacobian = false;  // J is at z (a trial's is formed once the trial is taken)
+  double merit = 0;           // |F .* rs|^2 / L^2
+  double residual = 0;        // max |F .* rs|
 };
 
-void evaluate(const SquareSystem& sys, const SmallVector& z, double L, State& s) {
+void evaluate(const SquareSystem& sys, const SmallVector& z, double L, State& s,
+              bool with_jacobian) {
   s.z = z;
-  sys.evaluate(z, s.F, s.J, s.rs);
+  if (with_jacobian)
+    sys.evaluate(z, s.F, s.J, s.rs);
+  else
+    sys.evaluate_residual(z, s.F, s.rs);
+  s.has_jacobian = with_jacobian;
   const SmallVector Fs = s.F.cwiseProduct(s.rs);
   s.residual = Fs.cwiseAbs().maxCoeff();
   s.merit = Fs.squaredNorm() / (L * L);
@@ -43,6 +49,12 @@ void evaluate(const SquareSystem& sys, const SmallVector& z, double L, State& s)
 }
 
 }  // namespace
+
+void SquareSystem::evaluate_residual(const SmallVector& z, SmallVector& F,
+                                     SmallVector& row_scale) const {
+  SmallMatrix J;
+  evaluate(z, F, J, row_scale);
+}
 
 NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
                                  const NewtonOptions& options) {
@@ -54,7 +66,7 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
   State states[2];
   State* cur = &states[0];
   State* trial = &states[1];
-  evaluate(system, z, L, *cur);
+  evaluate(system, z, L, *cur, true);
   NewtonResult result;
   bool polishing = false;
   double damping = 0;  // relative LM damping, carried between iterations (0: not yet used)
@@ -64,6 +76,11 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
       if (polishing) break;
       polishing = true;  // one more Newton step takes the solution to round-off
     }
+    // The taken trial's Jacobian (F and the row factors come out the same bits again).
+    if (!cur->has_jacobian) {
+      system.evaluate(cur->z, cur->F, cur->J, cur->rs);
+      cur->has_jacobian = true;
+    }
     // Dimensionless system: rows in units of L, unknowns in units of their scales.
     const SmallVector Ft = cur->F.cwiseProduct(cur->rs) / L;
     SmallMatrix Jt = (cur->rs / L).asDiagonal() * cur->J * cs.asDiagonal();
@@ -72,7 +89,7 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
       if (!step.allFinite()) return false;
       const double big = step.cwiseAbs().maxCoeff();
       if (big > options.max_step) step *= options.max_step / big;
-      evaluate(system, cur->z + cs.cwiseProduct(step), L, *trial);
+      evaluate(system, cur->z + cs.cwiseProduct(step), L, *trial, false);
       return trial->merit < cur->merit;
     };
     // A rejected step v bent along the solution curve (second-order correction, geodesic

@@ -20,6 +20,11 @@ class SquareSystem {
   // 1 / |grad g|, for dimensionless rows the length scale).
   virtual void evaluate(const SmallVector& z, SmallVector& F, SmallMatrix& J,
                         SmallVector& row_scale) const = 0;
+  // F(z) and the row factors alone, the same bits as evaluate's: a trial step reads only these,
+  // and most trials are rejected (63% of Example 1's), so their Jacobians would go unread.
+  // By default evaluate's, with a Jacobian thrown away.
+  virtual void evaluate_residual(const SmallVector& z, SmallVector& F,
+                                 SmallVector& row_scale) const;
   // Per-unknown scales: the length scale for positions and gaps, 1 for dimensionless ones.
   virtual void unknown_scales(SmallVector& scale) const = 0;
 };

@@ -54,8 +54,18 @@ PairSystem::PairSystem(const PairSetup& setup, PtcType type)
 
 void PairSystem::evaluate(const SmallVector& z, SmallVector& F, SmallMatrix& J,
                           SmallVector& rs) const {
-  F.setZero(size_);
   J.setZero(size_, size_);
+  evaluate_rows(z, F, &J, rs);
+}
+
+void PairSystem::evaluate_residual(const SmallVector& z, SmallVector& F,
+                                   SmallVector& rs) const {
+  evaluate_rows(z, F, nullptr, rs);
+}
+
+void PairSystem::evaluate_rows(const SmallVector& z, SmallVector& F, SmallMatrix* J,
+                               SmallVector& rs) const {
+  F.setZero(size_);
   rs.setOnes(size_);
   switch (type_) {
     case PtcType::FF: evaluate_ff(z, F, J, rs); break;
@@ -75,66 +85,76 @@ void PairSystem::unknown_scales(SmallVector& scale) const {
   if (type_ == PtcType::FF) scale[7] = 1;  // k is dimensionless
 }
 
-void PairSystem::evaluate_ee(const SmallVector& z, SmallVector& F, SmallMatrix& J,
+void PairSystem::evaluate_ee(const SmallVector& z, SmallVector& F, SmallMatrix* J,
                              SmallVector& rs) const {
   const Eigen::Vector3d p_A = z.segment<3>(0), p_B = z.segment<3>(3);
-  const SurfaceJet ja1 = SurfaceJet::at(ga(0), p_A), ja2 = SurfaceJet::at(ga(1), p_A);
-  const SurfaceJet jb1 = SurfaceJet::at(gb(0), p_B), jb2 = SurfaceJet::at(gb(1), p_B);
-  const CurveJet ca = CurveJet::of(ja1, ja2), cb = CurveJet::of(jb1, jb2);
+  const bool jacobian = J != nullptr;
+  const SurfaceJet ja1 = SurfaceJet::at(ga(0), p_A, jacobian);
+  const SurfaceJet ja2 = SurfaceJet::at(ga(1), p_A, jacobian);
+  const SurfaceJet jb1 = SurfaceJet::at(gb(0), p_B, jacobian);
+  const SurfaceJet jb2 = SurfaceJet::at(gb(1), p_B, jacobian);
+  const CurveJet ca = CurveJet::of(ja1, ja2, jacobian), cb = CurveJet::of(jb1, jb2, jacobian);
   const Eigen::Matrix3d& R = s_.R;
   const SurfaceJet* curves[4] = {&ja1, &ja2, &jb1, &jb2};
   for (int k = 0; k < 4; ++k) {
     F[k] = curves[k]->value;
-    J.row(k).segment<3>(k < 2 ? 0 : 3) = curves[k]->gradient;
     rs[k] = 1 / curves[k]->gradient_norm;
   }
   const Eigen::Vector3d D = R * p_A + s_.t - p_B;
   // D . R c_a = 0: d/dp_A = c_a + dc_a^T R^T D, d/dp_B = -R c_a.
   F[4] = D.dot(R * ca.c);
-  J.row(4).segment<3>(0) = ca.c + ca.dc.transpose() * (R.transpose() * D);
-  J.row(4).segment<3>(3) = -(R * ca.c);
   rs[4] = 1 / ca.c.norm();
   // D . c_b = 0: d/dp_A = R^T c_b, d/dp_B = -c_b + dc_b^T D.
   F[5] = D.dot(cb.c);
-  J.row(5).segment<3>(0) = R.transpose() * cb.c;
-  J.row(5).segment<3>(3) = -cb.c + cb.dc.transpose() * D;
   rs[5] = 1 / cb.c.norm();
+  if (!J) return;
+  for (int k = 0; k < 4; ++k) J->row(k).segment<3>(k < 2 ? 0 : 3) = curves[k]->gradient;
+  J->row(4).segment<3>(0) = ca.c + ca.dc.transpose() * (R.transpose() * D);
+  J->row(4).segment<3>(3) = -(R * ca.c);
+  J->row(5).segment<3>(0) = R.transpose() * cb.c;
+  J->row(5).segment<3>(3) = -cb.c + cb.dc.transpose() * D;
 }
 
-void PairSystem::evaluate_ve(const SmallVector& z, SmallVector& F, SmallMatrix& J,
+void PairSystem::evaluate_ve(const SmallVector& z, SmallVector& F, SmallMatrix* J,
                              SmallVector& rs) const {
   const Eigen::Vector3d p_B = z.segment<3>(0);
-  const SurfaceJet j1 = SurfaceJet::at(gb(0), p_B), j2 = SurfaceJet::at(gb(1), p_B);
-  const CurveJet cb = CurveJet::of(j1, j2);
+  const bool jacobian = J != nullptr;
+  const SurfaceJet j1 = SurfaceJet::at(gb(0), p_B, jacobian);
+  const SurfaceJet j2 = SurfaceJet::at(gb(1), p_B, jacobian);
+  const CurveJet cb = CurveJet::of(j1, j2, jacobian);
   F[0] = j1.value;
-  J.row(0) = j1.gradient.transpose();
   rs[0] = 1 / j1.gradient_norm;
   F[1] = j2.value;
-  J.row(1) = j2.gradient.transpose();
   rs[1] = 1 / j2.gradient_norm;
   // (x_A - p_B) . c_b = 0: p_B is the foot of A's vertex on B's edge curve.
   const Eigen::Vector3d D = s_.R * vertex_A_ + s_.t - p_B;
   F[2] = D.dot(cb.c);
-  J.row(2) = (-cb.c + cb.dc.transpose() * D).transpose();
   rs[2] = 1 / cb.c.norm();
+  if (!J) return;
+  J->row(0) = j1.gradient.transpose();
+  J->row(1) = j2.gradient.transpose();
+  J->row(2) = (-cb.c + cb.dc.transpose() * D).transpose();
 }
 
-void PairSystem::evaluate_ev(const SmallVector& z, SmallVector& F, SmallMatrix& J,
+void PairSystem::evaluate_ev(const SmallVector& z, SmallVector& F, SmallMatrix* J,
                              SmallVector& rs) const {
   const Eigen::Vector3d p_A = z.segment<3>(0);
-  const SurfaceJet j1 = SurfaceJet::at(ga(0), p_A), j2 = SurfaceJet::at(ga(1), p_A);
-  const CurveJet ca = CurveJet::of(j1, j2);
+  const bool jacobian = J != nullptr;
+  const SurfaceJet j1 = SurfaceJet::at(ga(0), p_A, jacobian);
+  const SurfaceJet j2 = SurfaceJet::at(ga(1), p_A, jacobian);
+  const CurveJet ca = CurveJet::of(j1, j2, jacobian);
   F[0] = j1.value;
-  J.row(0) = j1.gradient.transpose();
   rs[0] = 1 / j1.gradient_norm;
   F[1] = j2.value;
-  J.row(1) = j2.gradient.transpose();
   rs[1] = 1 / j2.gradient_norm;
   // (p_A - v_A) . c_a = 0 in A's frame, v_A = B's vertex seen from A.
   const Eigen::Vector3d D = p_A - s_.R.transpose() * (vertex_B_ - s_.t);
   F[2] = D.dot(ca.c);
-  J.row(2) = (ca.c + ca.dc.transpose() * D).transpose();
   rs[2] = 1 / ca.c.norm();
+  if (!J) return;
+  J->row(0) = j1.gradient.transpose();
+  J->row(1) = j2.gradient.transpose();
+  J->row(2) = (ca.c + ca.dc.transpose() * D).transpose();
 }
 
 SmallVector PairSystem::initial(const Eigen::Vector3d& start_A,

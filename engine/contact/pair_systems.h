@@ -57,6 +57,8 @@ class PairSystem final : public SquareSystem {
   int size() const override { return size_; }
   void evaluate(const SmallVector& z, SmallVector& F, SmallMatrix& J,
                 SmallVector& row_scale) const override;
+  void evaluate_residual(const SmallVector& z, SmallVector& F,
+                         SmallVector& row_scale) const override;
   void unknown_scales(SmallVector& scale) const override;
 
   // The unknowns for starting points near the elements (A's frame, B's frame).
@@ -76,14 +78,17 @@ class PairSystem final : public SquareSystem {
   bool descend_crossing(SmallVector& z, const NewtonOptions& options) const;
 
  private:
-  void evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_fe(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_ef(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_fv(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_vf(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_ee(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_ve(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
-  void evaluate_ev(const SmallVector& z, SmallVector& F, SmallMatrix& J, SmallVector& rs) const;
+  // F and the row scales, and J (set to zero by the caller) unless it is null: without J the
+  // jets skip the Hessians, and F and the scales are the same bits.
+  void evaluate_rows(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_ff(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_fe(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_ef(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_fv(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_vf(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_ee(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_ve(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
+  void evaluate_ev(const SmallVector& z, SmallVector& F, SmallMatrix* J, SmallVector& rs) const;
 
   Eigen::Vector3d unit_normal_A(const Eigen::Vector3d& p_A) const;  // of A's face
   Eigen::Vector3d unit_normal_B(const Eigen::Vector3d& p_B) const;  // of B's face
