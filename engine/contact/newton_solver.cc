@@ -50,12 +50,6 @@ void evaluate(const SquareSystem& sys, const SmallVector& z, double L, State& s,
 
 }  // namespace
 
-void SquareSystem::evaluate_residual(const SmallVector& z, SmallVector& F,
-                                     SmallVector& row_scale) const {
-  SmallMatrix J;
-  evaluate(z, F, J, row_scale);
-}
-
 NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
                                  const NewtonOptions& options) {
   const double L = options.length_scale;

@@ -22,16 +22,15 @@ class SquareSystem {
                         SmallVector& row_scale) const = 0;
   // F(z) and the row factors alone, the same bits as evaluate's: a trial step reads only these,
   // and most trials are rejected (63% of Example 1's), so their Jacobians would go unread.
-  // By default evaluate's, with a Jacobian thrown away.
   virtual void evaluate_residual(const SmallVector& z, SmallVector& F,
-                                 SmallVector& row_scale) const;
+                                 SmallVector& row_scale) const = 0;
   // Per-unknown scales: the length scale for positions and gaps, 1 for dimensionless ones.
   virtual void unknown_scales(SmallVector& scale) const = 0;
 };
 
 struct NewtonOptions {
-  double length_scale = 1;   // L
-  double residual = 1e-12;   // stop when every scaled row is below this (a length)
+  double length_scale = 1;  // L
+  double residual = 1e-12;  // stop when every scaled row is below this (a length)
   int max_iterations = 50;
   // Largest step of any unknown, in units of its scale: keeps poor starts from jumping to a
   // far branch of the surfaces (a quarter of the scene).

@@ -2,6 +2,8 @@
 // (the Newton solver's trials) against the full one, bit for bit, for every PtC type with
 // unknowns: the three-sphere lens (faces, edges, vertices) over the bowl-topped body, and the
 // same scene with A and B swapped (so that B has the vertices).
+#include "engine/contact/pair_systems.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "engine/contact/pair_systems.h"
 #include "engine/geometry/scene_geometry.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/scene_swap.h"
@@ -50,9 +51,12 @@ std::vector<ElementId> elements_of(const Solid& s) {
 
 Eigen::Vector3d point_of(const Solid& s, ElementId id) {
   switch (id.kind) {
-    case ElementKind::Face: return s.faces[id.index].interior_point;
-    case ElementKind::Edge: return s.edges[id.index].samples[0].point;
-    case ElementKind::Vertex: return s.vertices[id.index].point;
+    case ElementKind::Face:
+      return s.faces[id.index].interior_point;
+    case ElementKind::Edge:
+      return s.edges[id.index].samples[0].point;
+    case ElementKind::Vertex:
+      return s.vertices[id.index].point;
   }
   return Eigen::Vector3d::Zero();
 }
@@ -104,42 +108,42 @@ bool same_bits(const SmallVector& x, const SmallVector& y) {
 }
 
 TEST(PairSystems, ResidualAloneIsTheFullEvaluationsBits) {
-  for_each_pair_system([](const PairSystem& system, const SmallVector& z, const std::string& at,
-                          double) {
-    SmallVector F, rs, F_alone, rs_alone;
-    SmallMatrix J;
-    system.evaluate(z, F, J, rs);
-    system.evaluate_residual(z, F_alone, rs_alone);
-    EXPECT_TRUE(same_bits(F, F_alone)) << at << ": F " << F.transpose() << " vs "
-                                       << F_alone.transpose();
-    EXPECT_TRUE(same_bits(rs, rs_alone)) << at << ": row scales";
-  });
+  for_each_pair_system(
+      [](const PairSystem& system, const SmallVector& z, const std::string& at, double) {
+        SmallVector F, rs, F_alone, rs_alone;
+        SmallMatrix J;
+        system.evaluate(z, F, J, rs);
+        system.evaluate_residual(z, F_alone, rs_alone);
+        EXPECT_TRUE(same_bits(F, F_alone))
+            << at << ": F " << F.transpose() << " vs " << F_alone.transpose();
+        EXPECT_TRUE(same_bits(rs, rs_alone)) << at << ": row scales";
+      });
 }
 
 TEST(PairSystems, JacobiansMatchCentralDifferences) {
-  for_each_pair_system([](const PairSystem& system, const SmallVector& z, const std::string& at,
-                          double L) {
-    const int n = system.size();
-    SmallVector F, rs, cs;
-    SmallMatrix J;
-    system.evaluate(z, F, J, rs);
-    system.unknown_scales(cs);
-    // Compared dimensionless: row i times rs_i, column j times the unknown's scale cs_j.
-    for (int j = 0; j < n; ++j) {
-      const double h = kFdStep * cs[j];
-      SmallVector zp = z, zm = z, Fp, Fm, rs_unused;
-      zp[j] += h;
-      zm[j] -= h;
-      system.evaluate_residual(zp, Fp, rs_unused);
-      system.evaluate_residual(zm, Fm, rs_unused);
-      for (int i = 0; i < n; ++i) {
-        const double units = rs[i] * cs[j] / L;
-        const double fd = (Fp[i] - Fm[i]) / (2 * h) * units, an = J(i, j) * units;
-        EXPECT_NEAR(fd, an, kFdTolerance * std::max(1.0, std::abs(an)))
-            << at << ": dF" << i << "/dz" << j;
-      }
-    }
-  });
+  for_each_pair_system(
+      [](const PairSystem& system, const SmallVector& z, const std::string& at, double L) {
+        const int n = system.size();
+        SmallVector F, rs, cs;
+        SmallMatrix J;
+        system.evaluate(z, F, J, rs);
+        system.unknown_scales(cs);
+        // Compared dimensionless: row i times rs_i, column j times the unknown's scale cs_j.
+        for (int j = 0; j < n; ++j) {
+          const double h = kFdStep * cs[j];
+          SmallVector zp = z, zm = z, Fp, Fm, rs_unused;
+          zp[j] += h;
+          zm[j] -= h;
+          system.evaluate_residual(zp, Fp, rs_unused);
+          system.evaluate_residual(zm, Fm, rs_unused);
+          for (int i = 0; i < n; ++i) {
+            const double units = rs[i] * cs[j] / L;
+            const double fd = (Fp[i] - Fm[i]) / (2 * h) * units, an = J(i, j) * units;
+            EXPECT_NEAR(fd, an, kFdTolerance * std::max(1.0, std::abs(an)))
+                << at << ": dF" << i << "/dz" << j;
+          }
+        }
+      });
 }
 
 }  // namespace
