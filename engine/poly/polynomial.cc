@@ -3,9 +3,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 #include <stdexcept>
 
 namespace pcsg {
@@ -43,6 +40,7 @@ std::array<int, 3> Polynomial::exponents(int idx) { return table().exps[idx]; }
 Polynomial Polynomial::constant(double c) {
   Polynomial p;
   p.coeffs_[0] = c;
+  p.compile();
   return p;
 }
 
@@ -51,6 +49,7 @@ Polynomial Polynomial::variable(int axis) {
   int e[3] = {0, 0, 0};
   e[axis] = 1;
   p.coeffs_[index(e[0], e[1], e[2])] = 1.0;
+  p.compile();
   return p;
 }
 
@@ -72,8 +71,9 @@ double Polynomial::max_abs_coeff() const {
 
 void Polynomial::require_same_origin(const Polynomial& o) const {
   if (origin_ != o.origin_)
-    throw std::invalid_argument("polynomials expanded about different origins cannot be "
-                                "combined; recentre one first");
+    throw std::invalid_argument(
+        "polynomials expanded about different origins cannot be "
+        "combined; recentre one first");
 }
 
 Polynomial Polynomial::recentred(const Eigen::Vector3d& o) const {
@@ -102,6 +102,7 @@ Polynomial Polynomial::recentred(const Eigen::Vector3d& o) const {
   Polynomial r;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = static_cast<double>(acc[n]);
   r.origin_ = o;
+  r.compile();
   return r;
 }
 
@@ -110,6 +111,7 @@ Polynomial Polynomial::operator+(const Polynomial& o) const {
   Polynomial r;
   r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] + o.coeffs_[n];
+  r.compile();
   return r;
 }
 
@@ -118,6 +120,7 @@ Polynomial Polynomial::operator-(const Polynomial& o) const {
   Polynomial r;
   r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] - o.coeffs_[n];
+  r.compile();
   return r;
 }
 
@@ -127,6 +130,7 @@ Polynomial Polynomial::operator*(double s) const {
   Polynomial r;
   r.origin_ = origin_;
   for (int n = 0; n < kNumCoeffs; ++n) r.coeffs_[n] = coeffs_[n] * s;
+  r.compile();
   return r;
 }
 
@@ -153,6 +157,7 @@ Polynomial Polynomial::operator*(const Polynomial& o) const {
     }
   }
   r.origin_ = origin_;
+  r.compile();
   return r;
 }
 
@@ -168,68 +173,77 @@ Polynomial Polynomial::pow(int n) const {
   return r;
 }
 
-namespace {
-
-// Bit n set when coefficient n is not zero (NaN counts as not zero), found without a branch
-// per coefficient: a test on each mispredicts on most polynomials, which have a few terms of
-// the 35 (measured on Example 2: those tests took three quarters of evaluate's time).
-std::uint64_t nonzero_terms(const std::array<double, Polynomial::kNumCoeffs>& c) {
-  static_assert(Polynomial::kNumCoeffs <= 64);
-  std::uint64_t terms = 0;
-  int n = 0;
-#ifdef __SSE2__
-  for (; n + 1 < Polynomial::kNumCoeffs; n += 2) {
-    const __m128d v = _mm_loadu_pd(&c[n]);
-    const int m = _mm_movemask_pd(_mm_cmpneq_pd(v, _mm_setzero_pd()));
-    terms |= static_cast<std::uint64_t>(m) << n;
-  }
-#endif
-  for (; n < Polynomial::kNumCoeffs; ++n) terms |= static_cast<std::uint64_t>(c[n] != 0.0) << n;
-  return terms;
+void Polynomial::set_coeff(int i, int j, int k, double c) {
+  coeffs_[index(i, j, k)] = c;
+  compile();
 }
 
-}  // namespace
+void Polynomial::compile() {
+  terms_.clear();
+  const auto& t = table();
+  // Visits the non-zero coefficients (NaN counts as not zero) in monomial order and appends
+  // the term of each that has the derivative `d` (d_a: how often it differentiates axis a).
+  auto add = [&](int d0, int d1, int d2) {
+    for (int n = 0; n < kNumCoeffs; ++n) {
+      const double c = coeffs_[n];
+      if (c == 0.0) continue;
+      const int e0 = t.exps[n][0], e1 = t.exps[n][1], e2 = t.exps[n][2];
+      if (e0 < d0 || e1 < d1 || e2 < d2) continue;
+      // c e_a (e_a - 1) for a second derivative in a, c e_a e_b for a mixed one, in this order
+      const int d[3] = {d0, d1, d2}, e[3] = {e0, e1, e2};
+      double k = c;
+      for (int a = 0; a < 3; ++a)
+        for (int m = 0; m < d[a]; ++m) k = k * (e[a] - m);
+      terms_.push_back({k,
+                        {static_cast<std::uint8_t>(e0 - d0), static_cast<std::uint8_t>(e1 - d1),
+                         static_cast<std::uint8_t>(e2 - d2)}});
+    }
+  };
+  static constexpr int kDerivatives[kLists][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                                  {2, 0, 0}, {1, 1, 0}, {1, 0, 1}, {0, 2, 0},
+                                                  {0, 1, 1}, {0, 0, 2}};
+  for (int l = 0; l < kLists; ++l) {
+    list_begin_[l] = static_cast<std::uint16_t>(terms_.size());
+    add(kDerivatives[l][0], kDerivatives[l][1], kDerivatives[l][2]);
+  }
+  list_begin_[kLists] = static_cast<std::uint16_t>(terms_.size());
+}
 
 void Polynomial::evaluate(const Eigen::Vector3d& p, double* value, Eigen::Vector3d* gradient,
                           Eigen::Matrix3d* hessian) const {
-  // Powers q^0..q^4 of each coordinate of q = p - origin; derivative of x^i is i x^(i-1),
-  // second i(i-1) x^(i-2). Each term is formed as c * exponents * powers, left to right, and
-  // the terms are summed in monomial order (the solves' results depend on these bits).
+  // Powers q^0..q^4 of each coordinate of q = p - origin. A value or gradient term is formed
+  // as k * powers left to right, a Hessian term as k * (powers), and each list is summed in
+  // monomial order (the solves' results depend on these bits).
   double pw[3][kMaxDegree + 1];
   for (int a = 0; a < 3; ++a) {
     pw[a][0] = 1.0;
     const double q = p[a] - origin_[a];
     for (int e = 1; e <= kMaxDegree; ++e) pw[a][e] = pw[a][e - 1] * q;
   }
-  const bool want_g = gradient || hessian;
-  double v = 0, g0 = 0, g1 = 0, g2 = 0;
-  double h00 = 0, h01 = 0, h02 = 0, h11 = 0, h12 = 0, h22 = 0;
-  const auto& t = table();
-  // The non-zero coefficients, visited in monomial order.
-  for (std::uint64_t terms = nonzero_terms(coeffs_); terms != 0; terms &= terms - 1) {
-    const int n = __builtin_ctzll(terms);
-    const double c = coeffs_[n];
-    const int e0 = t.exps[n][0], e1 = t.exps[n][1], e2 = t.exps[n][2];
-    const double x0 = pw[0][e0], x1 = pw[1][e1], x2 = pw[2][e2];
-    if (value) v += c * x0 * x1 * x2;
-    if (want_g) {
-      if (e0) g0 += c * e0 * pw[0][e0 - 1] * x1 * x2;
-      if (e1) g1 += c * e1 * x0 * pw[1][e1 - 1] * x2;
-      if (e2) g2 += c * e2 * x0 * x1 * pw[2][e2 - 1];
+  const Term* terms = terms_.data();
+  auto sum = [&](int l) {
+    double s = 0;
+    for (int n = list_begin_[l]; n < list_begin_[l + 1]; ++n) {
+      const Term& t = terms[n];
+      s += t.k * pw[0][t.e[0]] * pw[1][t.e[1]] * pw[2][t.e[2]];
     }
-    if (hessian) {
-      // c e_a (e_a - 1) or c e_a e_b, never 0 when the exponents allow the derivative
-      if (e0 >= 2) h00 += c * e0 * (e0 - 1) * (pw[0][e0 - 2] * x1 * x2);
-      if (e0 && e1) h01 += c * e0 * e1 * (pw[0][e0 - 1] * pw[1][e1 - 1] * x2);
-      if (e0 && e2) h02 += c * e0 * e2 * (pw[0][e0 - 1] * x1 * pw[2][e2 - 1]);
-      if (e1 >= 2) h11 += c * e1 * (e1 - 1) * (x0 * pw[1][e1 - 2] * x2);
-      if (e1 && e2) h12 += c * e1 * e2 * (x0 * pw[1][e1 - 1] * pw[2][e2 - 1]);
-      if (e2 >= 2) h22 += c * e2 * (e2 - 1) * (x0 * x1 * pw[2][e2 - 2]);
+    return s;
+  };
+  auto sum_second = [&](int l) {
+    double s = 0;
+    for (int n = list_begin_[l]; n < list_begin_[l + 1]; ++n) {
+      const Term& t = terms[n];
+      s += t.k * (pw[0][t.e[0]] * pw[1][t.e[1]] * pw[2][t.e[2]]);
     }
+    return s;
+  };
+  if (value) *value = sum(0);
+  if (gradient) *gradient = Eigen::Vector3d(sum(1), sum(2), sum(3));
+  if (hessian) {
+    const double h00 = sum_second(4), h01 = sum_second(5), h02 = sum_second(6);
+    const double h11 = sum_second(7), h12 = sum_second(8), h22 = sum_second(9);
+    *hessian << h00, h01, h02, h01, h11, h12, h02, h12, h22;
   }
-  if (value) *value = v;
-  if (gradient) *gradient = Eigen::Vector3d(g0, g1, g2);
-  if (hessian) *hessian << h00, h01, h02, h01, h11, h12, h02, h12, h22;
 }
 
 double Polynomial::value(const Eigen::Vector3d& p) const {
@@ -285,8 +299,8 @@ Polynomial Polynomial::substituted(const Eigen::Matrix3d& M, const Eigen::Vector
   const auto& t = table();
   for (int n = 0; n < kNumCoeffs; ++n) {
     if (coeffs_[n] == 0.0) continue;
-    r = r + lin[0].pow(t.exps[n][0]) * lin[1].pow(t.exps[n][1]) * lin[2].pow(t.exps[n][2]) *
-                coeffs_[n];
+    r = r +
+        lin[0].pow(t.exps[n][0]) * lin[1].pow(t.exps[n][1]) * lin[2].pow(t.exps[n][2]) * coeffs_[n];
   }
   return r;
 }
@@ -297,6 +311,7 @@ Polynomial Polynomial::homogeneous_part(int d) const {
   const auto& t = table();
   for (int n = 0; n < kNumCoeffs; ++n)
     if (t.exps[n][0] + t.exps[n][1] + t.exps[n][2] == d) r.coeffs_[n] = coeffs_[n];
+  r.compile();
   return r;
 }
 

@@ -10,7 +10,9 @@
 // function is evaluated from coordinates of the surface's own size, without cancellation.
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace pcsg {
 
@@ -30,7 +32,7 @@ class Polynomial {
 
   // Coefficients about origin().
   double coeff(int i, int j, int k) const { return coeffs_[index(i, j, k)]; }
-  void set_coeff(int i, int j, int k, double c) { coeffs_[index(i, j, k)] = c; }
+  void set_coeff(int i, int j, int k, double c);
   const std::array<double, kNumCoeffs>& coeffs() const { return coeffs_; }
   // The expansion point of the coefficients (zero unless recentred).
   const Eigen::Vector3d& origin() const { return origin_; }
@@ -78,9 +80,24 @@ class Polynomial {
 
  private:
   void require_same_origin(const Polynomial& o) const;
+  // Rebuilds terms_ from coeffs_; every function that writes coeffs_ calls it last.
+  void compile();
 
   std::array<double, kNumCoeffs> coeffs_;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+
+  // The evaluation's terms, compiled from the non-zero coefficients: k q0^e0 q1^e1 q2^e2 with
+  // q = p - origin. List 0 sums to the value, lists 1-3 to the gradient, lists 4-9 to the
+  // Hessian's h00 h01 h02 h11 h12 h22, each in monomial order; a derivative's k is the
+  // coefficient times its exponent factors, multiplied in the order evaluate used to (so the
+  // sums are bit for bit those of the term-by-term loop they replace).
+  struct Term {
+    double k;
+    std::uint8_t e[3];
+  };
+  static constexpr int kLists = 10;
+  std::vector<Term> terms_;
+  std::array<std::uint16_t, kLists + 1> list_begin_{};
 };
 
 inline Polynomial operator*(double s, const Polynomial& p) { return p * s; }

@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
 
 namespace pcsg {
 namespace {
@@ -16,8 +21,8 @@ Polynomial Z() { return Polynomial::variable(2); }
 
 TEST(Polynomial, ValueGradientHessianOfEllipsoid) {
   // 225x^2 + 100y^2 + 36z^2 - 225 (paper's Example 1, object A)
-  const Polynomial g = X().pow(2) * 225 + Y().pow(2) * 100 + Z().pow(2) * 36 -
-                       Polynomial::constant(225);
+  const Polynomial g =
+      X().pow(2) * 225 + Y().pow(2) * 100 + Z().pow(2) * 36 - Polynomial::constant(225);
   EXPECT_EQ(g.degree(), 2);
   const Eigen::Vector3d p(0.5, -0.25, 2.0);
   EXPECT_NEAR(g.value(p), 225 * 0.25 + 100 * 0.0625 + 36 * 4 - 225, kExact);
@@ -55,8 +60,8 @@ TEST(Polynomial, AlongLineMatchesEvaluation) {
 
 TEST(Polynomial, SubstitutionIsComposition) {
   const Polynomial g = X().pow(2) + Y().pow(2) * 4 - Z() * 3 + X() * Y() * Z();
-  const Eigen::Matrix3d M = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized())
-                                .toRotationMatrix() * 1.7;
+  const Eigen::Matrix3d M =
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() * 1.7;
   const Eigen::Vector3d c(0.2, -1.0, 0.5);
   const Polynomial h = g.substituted(M, c);
   const Eigen::Vector3d p(0.4, 0.9, -0.3);
@@ -106,11 +111,116 @@ TEST(Polynomial, RecentringAFarSphereRemovesTheCancellation) {
     EXPECT_EQ(back.coeffs()[n], local.coeffs()[n]) << "coefficient " << n;
   // at points of the sphere that c + q represents exactly: the recentred value is exact,
   // the far one is round-off of terms ~1.7e10
-  for (const Eigen::Vector3d& q : {Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(0, -4, 0),
-                                  Eigen::Vector3d(4, 0, 0)}) {
+  for (const Eigen::Vector3d& q :
+       {Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(0, -4, 0), Eigen::Vector3d(4, 0, 0)}) {
     EXPECT_EQ(back.value(c + q), local.value(q));
     EXPECT_NEAR(far.value(c + q), 0, 1e-15 * far.coeff(0, 0, 0)) << "the cancellation's size";
   }
+}
+
+// The evaluation pcsg had before its terms were compiled (session 58's, unchanged since
+// session 27 but for the non-zero mask): each term formed as c * exponents * powers, left to
+// right, summed in monomial order. The solves' results depend on these bits, so evaluate must
+// reproduce them exactly.
+void evaluate_term_by_term(const Polynomial& g, const Eigen::Vector3d& p, double& v,
+                           Eigen::Vector3d& grad, Eigen::Matrix3d& H) {
+  double pw[3][Polynomial::kMaxDegree + 1];
+  for (int a = 0; a < 3; ++a) {
+    pw[a][0] = 1.0;
+    const double q = p[a] - g.origin()[a];
+    for (int e = 1; e <= Polynomial::kMaxDegree; ++e) pw[a][e] = pw[a][e - 1] * q;
+  }
+  v = 0;
+  double g0 = 0, g1 = 0, g2 = 0, h00 = 0, h01 = 0, h02 = 0, h11 = 0, h12 = 0, h22 = 0;
+  for (int n = 0; n < Polynomial::kNumCoeffs; ++n) {
+    const double c = g.coeffs()[n];
+    if (c == 0.0) continue;
+    const auto e = Polynomial::exponents(n);
+    const int e0 = e[0], e1 = e[1], e2 = e[2];
+    const double x0 = pw[0][e0], x1 = pw[1][e1], x2 = pw[2][e2];
+    v += c * x0 * x1 * x2;
+    if (e0) g0 += c * e0 * pw[0][e0 - 1] * x1 * x2;
+    if (e1) g1 += c * e1 * x0 * pw[1][e1 - 1] * x2;
+    if (e2) g2 += c * e2 * x0 * x1 * pw[2][e2 - 1];
+    if (e0 >= 2) h00 += c * e0 * (e0 - 1) * (pw[0][e0 - 2] * x1 * x2);
+    if (e0 && e1) h01 += c * e0 * e1 * (pw[0][e0 - 1] * pw[1][e1 - 1] * x2);
+    if (e0 && e2) h02 += c * e0 * e2 * (pw[0][e0 - 1] * x1 * pw[2][e2 - 1]);
+    if (e1 >= 2) h11 += c * e1 * (e1 - 1) * (x0 * pw[1][e1 - 2] * x2);
+    if (e1 && e2) h12 += c * e1 * e2 * (x0 * pw[1][e1 - 1] * pw[2][e2 - 1]);
+    if (e2 >= 2) h22 += c * e2 * (e2 - 1) * (x0 * x1 * pw[2][e2 - 2]);
+  }
+  grad = Eigen::Vector3d(g0, g1, g2);
+  H << h00, h01, h02, h01, h11, h12, h02, h12, h22;
+}
+
+// Bit for bit, NaN for NaN.
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+}
+
+TEST(Polynomial, EvaluationIsTheTermByTermSumBitForBit) {
+  // Polynomials made by every operation that writes coefficients (each must leave the
+  // compiled terms matching them): products and powers, sums, differences, scaling, negation,
+  // recentring, substitution, homogeneous parts, set_coeff, and random dense quartics.
+  const Polynomial s = X().pow(2) + Y().pow(2) + Z().pow(2) + Polynomial::constant(4 - 0.25);
+  const Polynomial torus = s.pow(2) - (X().pow(2) + Y().pow(2)) * 16;
+  const Polynomial ellipsoid =
+      X().pow(2) * 225 + Y().pow(2) * 100 + Z().pow(2) * 36 - Polynomial::constant(225);
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  std::vector<Polynomial> gs = {Polynomial(),
+                                Polynomial::constant(-3.5),
+                                X(),
+                                -Z(),
+                                ellipsoid,
+                                torus,
+                                torus.recentred(Eigen::Vector3d(2.1, -0.3, 0.45)),
+                                ellipsoid.recentred(Eigen::Vector3d(1e4, -5e3, 1)),
+                                torus.substituted(R.transpose(), Eigen::Vector3d(0.3, 1e-3, -2)),
+                                torus.homogeneous_part(4),
+                                torus.homogeneous_part(2),
+                                ellipsoid * 1e-8 - X() * Y() * 3};
+  Polynomial edited = torus;
+  edited.set_coeff(1, 1, 1, -0.125);
+  edited.set_coeff(4, 0, 0, 0.0);
+  gs.push_back(edited);
+  Polynomial with_nan = ellipsoid;
+  with_nan.set_coeff(0, 1, 0, std::numeric_limits<double>::quiet_NaN());
+  gs.push_back(with_nan);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int r = 0; r < 20; ++r) {
+    Polynomial dense;
+    for (int n = 0; n < Polynomial::kNumCoeffs; ++n) {
+      const auto e = Polynomial::exponents(n);
+      // A third of the coefficients zero, the rest spread over 16 orders of magnitude.
+      if (rng() % 3 == 0) continue;
+      dense.set_coeff(e[0], e[1], e[2], u(rng) * std::pow(10.0, 8 * u(rng)));
+    }
+    gs.push_back(r % 2 ? dense : dense.recentred(Eigen::Vector3d(u(rng), u(rng), u(rng)) * 50));
+  }
+  int compared = 0;
+  for (size_t i = 0; i < gs.size(); ++i)
+    for (int k = 0; k < 200; ++k) {
+      const Eigen::Vector3d p =
+          gs[i].origin() + Eigen::Vector3d(u(rng), u(rng), u(rng)) * std::pow(10.0, 3 * u(rng));
+      double v0, v1;
+      Eigen::Vector3d g0, g1;
+      Eigen::Matrix3d H0, H1;
+      evaluate_term_by_term(gs[i], p, v0, g0, H0);
+      gs[i].evaluate(p, &v1, &g1, &H1);
+      bool same = same_bits(v0, v1);
+      for (int a = 0; a < 3; ++a) same = same && same_bits(g0[a], g1[a]);
+      for (int a = 0; a < 9; ++a) same = same && same_bits(H0(a), H1(a));
+      // Each output alone is the same sum.
+      same = same && same_bits(gs[i].value(p), v0);
+      for (int a = 0; a < 3; ++a) same = same && same_bits(gs[i].gradient(p)[a], g0[a]);
+      for (int a = 0; a < 9; ++a) same = same && same_bits(gs[i].hessian(p)(a), H0(a));
+      ASSERT_TRUE(same) << "polynomial " << i << " (" << gs[i].str() << ") at (" << p.transpose()
+                        << ")";
+      ++compared;
+    }
+  EXPECT_EQ(compared, 200 * static_cast<int>(gs.size()));
 }
 
 TEST(Polynomial, DegreeOverflowThrows) {
