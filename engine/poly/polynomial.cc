@@ -181,30 +181,26 @@ void Polynomial::set_coeff(int i, int j, int k, double c) {
 void Polynomial::compile() {
   terms_.clear();
   const auto& t = table();
-  // Visits the non-zero coefficients (NaN counts as not zero) in monomial order and appends
-  // the term of each that has the derivative `d` (d_a: how often it differentiates axis a).
-  auto add = [&](int d0, int d1, int d2) {
-    for (int n = 0; n < kNumCoeffs; ++n) {
-      const double c = coeffs_[n];
-      if (c == 0.0) continue;
-      const int e0 = t.exps[n][0], e1 = t.exps[n][1], e2 = t.exps[n][2];
-      if (e0 < d0 || e1 < d1 || e2 < d2) continue;
-      // c e_a (e_a - 1) for a second derivative in a, c e_a e_b for a mixed one, in this order
-      const int d[3] = {d0, d1, d2}, e[3] = {e0, e1, e2};
-      double k = c;
-      for (int a = 0; a < 3; ++a)
-        for (int m = 0; m < d[a]; ++m) k = k * (e[a] - m);
-      terms_.push_back({k,
-                        {static_cast<std::uint8_t>(e0 - d0), static_cast<std::uint8_t>(e1 - d1),
-                         static_cast<std::uint8_t>(e2 - d2)}});
-    }
-  };
+  // d[a]: how often list l differentiates axis a.
   static constexpr int kDerivatives[kLists][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
                                                   {2, 0, 0}, {1, 1, 0}, {1, 0, 1}, {0, 2, 0},
                                                   {0, 1, 1}, {0, 0, 2}};
   for (int l = 0; l < kLists; ++l) {
     list_begin_[l] = static_cast<std::uint16_t>(terms_.size());
-    add(kDerivatives[l][0], kDerivatives[l][1], kDerivatives[l][2]);
+    const int* d = kDerivatives[l];
+    // The non-zero coefficients (NaN counts as not zero) in monomial order, each whose term
+    // has the derivative d.
+    for (int n = 0; n < kNumCoeffs; ++n) {
+      const auto& e = t.exps[n];
+      if (coeffs_[n] == 0.0 || e[0] < d[0] || e[1] < d[1] || e[2] < d[2]) continue;
+      // c e_a (e_a - 1) for a second derivative in a, c e_a e_b for a mixed one, in this order
+      double k = coeffs_[n];
+      for (int a = 0; a < 3; ++a)
+        for (int m = 0; m < d[a]; ++m) k = k * (e[a] - m);
+      Term term{k, {}};
+      for (int a = 0; a < 3; ++a) term.e[a] = static_cast<std::uint8_t>(e[a] - d[a]);
+      terms_.push_back(term);
+    }
   }
   list_begin_[kLists] = static_cast<std::uint16_t>(terms_.size());
 }
