@@ -96,7 +96,7 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
       if (polishing) return false;  // at round-off already: nothing to bend
       if (!trial->z.allFinite() || !std::isfinite(trial->merit)) return false;
       const SmallVector v = (trial->z - cur->z).cwiseQuotient(cs);  // as taken (clipped)
-      const SmallVector curvature = trial->F.cwiseProduct(cur->rs) / L - Ft - Jt * v;
+      const SmallVector curvature = trial->F.cwiseProduct(cur->rs) / L - Ft - small_times(Jt, v);
       return try_step(v + solve(curvature));
     };
     const SmallLu lu(Jt);  // Eigen's partialPivLu, bit for bit, without its set-up
@@ -104,8 +104,9 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
     bool accepted = try_step(newton) ||
                     try_bent([&](const SmallVector& r) { return SmallVector(-lu.solve(r)); });
     if (!accepted) {
-      const SmallMatrix JtJ = Jt.transpose() * Jt;
-      const SmallVector g = Jt.transpose() * Ft;
+      // Eigen's products, bit for bit, without its dispatch and GEMM packing.
+      const SmallMatrix JtJ = small_gram(Jt);
+      const SmallVector g = small_transpose_times(Jt, Ft);
       // (A zero Jacobian still gets a positive damping: pure, tiny gradient steps.)
       const double scale = std::max(JtJ.diagonal().maxCoeff(), 1.0);
       if (damping <= 0) damping = kFirstDamping;
@@ -116,7 +117,7 @@ NewtonResult solve_square_system(const SquareSystem& system, SmallVector& z,
         const SmallLdlt ldlt(A);  // Eigen's ldlt, bit for bit, without its set-up
         const SmallVector v = -ldlt.solve(g);
         accepted = try_step(v) || try_bent([&](const SmallVector& r) {
-                     return SmallVector(-ldlt.solve(Jt.transpose() * r));
+                     return SmallVector(-ldlt.solve(small_transpose_times(Jt, r)));
                    });
         damping = accepted ? damping / kDampingShrink : damping * kDampingGrowth;
       }

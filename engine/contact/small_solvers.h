@@ -1,18 +1,20 @@
 #pragma once
 // The two factorisations of the Newton solver (newton_solver.cc) for its matrices of at most 8
-// rows: LU with partial pivoting, and the pivoted LDL^T of a symmetric matrix. Each does the
+// rows: LU with partial pivoting, and the pivoted LDL^T of a symmetric matrix; and the three
+// products of its Levenberg-Marquardt steps (J^T J, J^T x, J x) below. Each does the
 // same arithmetic, in the same order, as Eigen 3.4 does on a dynamic-size matrix
 // (PartialPivLU's unblocked factorisation, taken below 17 rows; LDLT's; their triangular
 // solves in one panel of 8, the GEMV and the vectorised sums inside them as SSE2 forms them),
 // so every result equals Eigen's bit for bit and every graph stays the same. What is left out
 // is what the solver never reads and Eigen forms on every call: the L1 norms kept for rcond(),
-// the permutation matrix built from the transpositions, the sign and info flags, and Eigen's
-// dispatch for general sizes. tests/engine/contact/small_solvers_test.cc compares both with
-// Eigen, bit for bit, on random, graded, nearly singular, integer (ties, zero pivots) and
-// non-finite matrices. Built for x86-64 without FMA (the project's flags): with FMA Eigen's
-// GEMV would fuse its multiply-adds, and that test would say so. The kernels take the size
-// as a template argument (one instance per size 1-8), so the compiler unrolls their loops;
-// the operations and their order are the same for every size.
+// the permutation matrix built from the transpositions, the sign and info flags, the GEMM
+// kernel's packing of its operands, and Eigen's dispatch for general sizes.
+// tests/engine/contact/small_solvers_test.cc compares each with Eigen, bit for bit, on random,
+// graded, nearly singular, integer (ties, zero pivots, signed zeros) and non-finite matrices. Built
+// for x86-64 without FMA (the project's flags): with FMA Eigen's GEMV would fuse its multiply-adds,
+// and that test would say so. The kernels take the size as a template argument (one instance per
+// size 1-8), so the compiler unrolls their loops; the operations and their order are the same for
+// every size.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cfloat>
@@ -213,7 +215,87 @@ void ldlt_solve(const double* m, const int* transposition, double* x) {
     if (transposition[k] != k) std::swap(x[k], x[transposition[k]]);
 }
 
+// The products of the solver's square matrices, as Eigen 3.4 forms them with SSE2 (each
+// checked against Eigen in tests/engine/contact/small_solvers_test.cc). J is N x N,
+// column-major.
+
+// G = J^T J, both triangles (entry (r, c) and (c, r) are the same sums). Below 7 rows Eigen
+// takes the lazy product, each entry a packet sum of two columns (packet_dot); from 7 on
+// (rows + rows + columns >= 20) its GEMM kernel, each entry summed in order from +0.
+template <int N>
+void gram(const double* j, double* g) {
+  for (int c = 0; c < N; ++c)
+    for (int r = c; r < N; ++r) {
+      const double* jr = j + N * r;
+      const double* jc = j + N * c;
+      double s;
+      if constexpr (N < 7) {
+        s = packet_dot(jr, jc, N);
+      } else {
+        s = 0.0;
+        for (int k = 0; k < N; ++k) s = s + jr[k] * jc[k];
+      }
+      g[r + N * c] = s;
+      g[c + N * r] = s;
+    }
+}
+
+// y = J^T x: Eigen's row-major GEMV, each entry in two lanes (the even and the odd terms, each
+// in order from +0), the lanes added, then the odd term left over.
+template <int N>
+void transpose_times(const double* j, const double* x, double* y) {
+  for (int c = 0; c < N; ++c) {
+    const double* jc = j + N * c;
+    double even = 0.0, odd = 0.0;
+    int k = 0;
+    for (; k + 1 < N; k += 2) {
+      even = even + jc[k] * x[k];
+      odd = odd + jc[k + 1] * x[k + 1];
+    }
+    double s = even + odd;
+    if (k < N) s = s + jc[k] * x[k];
+    y[c] = s;
+  }
+}
+
+// y = J x: Eigen's column-major GEMV, each entry summed over the columns in order from +0.
+template <int N>
+void times(const double* j, const double* x, double* y) {
+  double s[N];
+  for (int r = 0; r < N; ++r) s[r] = 0.0;
+  for (int c = 0; c < N; ++c)
+    for (int r = 0; r < N; ++r) s[r] = s[r] + at<N>(j, r, c) * x[c];
+  for (int r = 0; r < N; ++r) y[r] = s[r];
+}
+
 }  // namespace small_solvers_detail
+
+// J^T J of a square J, equal bit for bit to Eigen's J.transpose() * J.
+inline SmallMatrix small_gram(const SmallMatrix& j) {
+  SmallMatrix g(j.cols(), j.cols());
+  small_solvers_detail::with_size(static_cast<int>(j.rows()), [&](auto n) {
+    small_solvers_detail::gram<decltype(n)::value>(j.data(), g.data());
+  });
+  return g;
+}
+
+// J^T x of a square J, equal bit for bit to Eigen's J.transpose() * x.
+inline SmallVector small_transpose_times(const SmallMatrix& j, const SmallVector& x) {
+  SmallVector y(j.cols());
+  small_solvers_detail::with_size(static_cast<int>(j.rows()), [&](auto n) {
+    small_solvers_detail::transpose_times<decltype(n)::value>(j.data(), x.data(), y.data());
+  });
+  return y;
+}
+
+// J x of a square J, equal bit for bit to Eigen's J * x.
+inline SmallVector small_times(const SmallMatrix& j, const SmallVector& x) {
+  SmallVector y(j.rows());
+  small_solvers_detail::with_size(static_cast<int>(j.rows()), [&](auto n) {
+    small_solvers_detail::times<decltype(n)::value>(j.data(), x.data(), y.data());
+  });
+  return y;
+}
 
 // A = P^T L U, as Eigen's PartialPivLU.
 class SmallLu {

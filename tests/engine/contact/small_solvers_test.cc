@@ -167,5 +167,62 @@ TEST(SmallLdlt, SolvesAsEigenDoesOnIndefiniteUnsymmetricAndDegenerateMatrices) {
     }
 }
 
+// The solver's products against Eigen's, entry by entry: J^T J, J^T x and J x.
+void expect_products_as_eigen(const SmallMatrix& j, const SmallVector& x, const std::string& what) {
+  const SmallMatrix gram = j.transpose() * j;
+  const SmallMatrix ours = small_gram(j);
+  ASSERT_EQ(ours.rows(), gram.rows());
+  ASSERT_EQ(ours.cols(), gram.cols());
+  for (int c = 0; c < gram.cols(); ++c)
+    expect_same(ours.col(c), gram.col(c), j, "J^T J, column " + std::to_string(c) + ", " + what);
+  expect_same(small_transpose_times(j, x), j.transpose() * x, j, "J^T x, " + what);
+  expect_same(small_times(j, x), j * x, j, "J x, " + what);
+}
+
+TEST(SmallProducts, FormAsEigenDoesBitForBitOnGradedMatrices) {
+  // Entries over sixteen decades of either sign, so that the order of each sum shows in its
+  // last bits (a sum in any other order differs on most entries from 4 rows on).
+  std::mt19937_64 rng(20261207);
+  std::uniform_real_distribution<double> u(-1, 1), e(-8, 8);
+  for (int n = 1; n <= 8; ++n)
+    for (int trial = 0; trial < 400; ++trial) {
+      SmallMatrix j(n, n);
+      SmallVector x(n);
+      for (int r = 0; r < n; ++r) {
+        x[r] = u(rng) * std::pow(10.0, e(rng));
+        for (int c = 0; c < n; ++c) j(r, c) = u(rng) * std::pow(10.0, e(rng));
+      }
+      expect_products_as_eigen(j, x, "graded");
+      if (HasFailure()) return;
+    }
+}
+
+TEST(SmallProducts, FormAsEigenDoesOnSignedZerosAndNonFiniteEntries) {
+  // Small integers and signed zeros: a sum of -0 terms is -0 in Eigen's packet sums and +0 in
+  // its GEMM and GEMV sums, which start from +0. And an infinity or NaN in J or x.
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 2.0, -3.0};
+  std::mt19937_64 rng(13);
+  std::uniform_int_distribution<int> pick(0, 5);
+  for (int n = 1; n <= 8; ++n)
+    for (int trial = 0; trial < 2000; ++trial) {
+      SmallMatrix j(n, n);
+      SmallVector x(n);
+      for (int r = 0; r < n; ++r) {
+        x[r] = values[pick(rng)];
+        for (int c = 0; c < n; ++c) j(r, c) = values[pick(rng)];
+      }
+      expect_products_as_eigen(j, x, "signed zeros");
+      SmallMatrix bad = j;
+      bad(trial % n, (trial / 3) % n) = trial % 2 ? -inf : nan;
+      expect_products_as_eigen(bad, x, "non-finite matrix entry");
+      SmallVector bad_x = x;
+      bad_x[trial % n] = trial % 2 ? inf : nan;
+      expect_products_as_eigen(j, bad_x, "non-finite vector entry");
+      if (HasFailure()) return;
+    }
+}
+
 }  // namespace
 }  // namespace pcsg
