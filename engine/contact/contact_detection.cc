@@ -76,18 +76,23 @@ std::vector<int> group_pairs(const ContactContext& ctx, std::vector<std::pair<in
     first_A.mark[pairs[i].first] = first_A.generation;
     start_A[pairs[i].first] = i;
   }
+  // Connection is symmetric (sharing a vertex is), so each pair looks only at the pairs after
+  // it in the sorted list: the rest of its A triangle's run, then the runs of the A triangles
+  // after it that share a vertex with it (each neighbour list is sorted). The components,
+  // and their roots (each the least index in it), are those of looking at every pair.
   for (int i = 0; i < n; ++i) {
     const auto [tA, tB] = pairs[i];
     near_B.clear(iB);
     near_B.mark_around(iB, tB);  // tB and the B triangles sharing a vertex with it
-    auto visit = [&](int nA) {
-      if (!first_A.marked(nA)) return;
-      for (int j = start_A[nA]; j < n && pairs[j].first == nA; ++j)
+    for (int j = i + 1; j < n && pairs[j].first == tA; ++j)
+      if (near_B.marked(pairs[j].second)) uf.unite(i, j);
+    const int* nA = iA.neighbors.data() + iA.neighbor_offsets[tA];
+    const int* end = iA.neighbors.data() + iA.neighbor_offsets[tA + 1];
+    for (nA = std::upper_bound(nA, end, tA); nA != end; ++nA) {
+      if (!first_A.marked(*nA)) continue;
+      for (int j = start_A[*nA]; j < n && pairs[j].first == *nA; ++j)
         if (near_B.marked(pairs[j].second)) uf.unite(i, j);
-    };
-    visit(tA);
-    for (int k = iA.neighbor_offsets[tA]; k < iA.neighbor_offsets[tA + 1]; ++k)
-      visit(iA.neighbors[k]);
+    }
   }
   std::vector<int> group(n);
   for (int i = 0; i < n; ++i) group[i] = uf.find(i);
@@ -228,8 +233,7 @@ std::pair<int, double> farthest_witness(const std::vector<Eigen::Vector3d>& cent
 constexpr int kMaxExtraSolves = 4;
 
 bool same_contact(const PointContact& x, const PointContact& y, double distinct) {
-  return x.a == y.a && x.b == y.b && x.type == y.type &&
-         (x.point_B - y.point_B).norm() <= distinct;
+  return x.a == y.a && x.b == y.b && x.type == y.type && (x.point_B - y.point_B).norm() <= distinct;
 }
 
 // Dimension of an element (face 2, edge 1, vertex 0).
@@ -324,8 +328,8 @@ std::optional<double> depth_inside(const Solid& solid, const Eigen::Vector3d& p,
 
 // Mesh vertices (exact surface points) of one solid strictly inside the other prove a
 // penetration even where no pair solve found its deepest point.
-void vertex_evidence(const SolidMesh& mesh, const std::vector<int>& triangles,
-                     const Solid& other, const Pose& to_other, double depth,
+void vertex_evidence(const SolidMesh& mesh, const std::vector<int>& triangles, const Solid& other,
+                     const Pose& to_other, double depth,
                      std::optional<std::pair<Eigen::Vector3d, double>>& deepest) {
   for (int t : triangles)
     for (int k = 0; k < 3; ++k) {
@@ -519,8 +523,7 @@ ContactReport detect_anew(const ContactContext& ctx, const Pose& X_BA,
   std::vector<bool> penetrates(regions.candidates.size(), false);
   // one solve of candidate c of region r from triangle pair `start`: what it found
   enum class Found { Nothing, Failed, Penetration, Saddle, Minimum };
-  auto solve_from = [&](size_t r, const Candidate& c, int start,
-                        PointContact* out) -> Found {
+  auto solve_from = [&](size_t r, const Candidate& c, int start, PointContact* out) -> Found {
     const auto [tA, tB] = pairs[start];
     const ResolvedContact res = resolve_from_mesh_start(
         scene, X_BA, c.a, c.b, start_on(scene.A, c.a, ctx.index_A().centroids[tA]),
