@@ -209,6 +209,7 @@ struct BoxTree {
   struct Node {
     double size = 0;      // FCL's bv.size(), for its split rule
     int first_child = 0;  // FCL's: negative at a leaf
+    int primitive = -1;   // a leaf's triangle (FCL's primitiveId, an out-of-line call)
     bool leaf() const { return first_child < 0; }
   };
   std::vector<Node> nodes;
@@ -232,7 +233,7 @@ BoxTree box_tree(const Model& model) {
   tree.sizes.resize(tree.boxes.size());
   for (int i = 0; i < n; ++i) {
     const fcl::BVNode<fcl::OBBRSSd>& node = model.getBV(i);
-    tree.nodes[i] = {node.bv.size(), node.first_child};
+    tree.nodes[i] = {node.bv.size(), node.first_child, node.isLeaf() ? node.primitiveId() : -1};
     if (!node.isLeaf() && (node.first_child % 2 != 1 || node.first_child + 1 >= n))
       throw std::logic_error("ContactContext: FCL's BVH does not number children in pairs");
   }
@@ -312,13 +313,19 @@ inline __attribute__((always_inline)) int lanes_apart(const BoxLanes& a, const B
   return (apart[0] ? 1 : 0) | (apart[1] ? 2 : 0);
 }
 
-// B's boxes placed in A's frame for one query, a block when first needed. The storage is the
-// thread's and is reused by its next query: a stamp per block tells the current placements.
+// B's boxes placed in A's frame for one query, a block when first needed, both lanes at once.
+// Only the inner tests read them (a leaf test places its boxes as FCL does), and those need no
+// particular bits: their slack (kBallRoundOff, FCL's 1e-6) is far above the round-off of a
+// placement. The storage is the thread's and is reused by its next query: a stamp per block
+// tells the current placements.
 class PlacedBoxes {
  public:
-  PlacedBoxes(const Model& B, const BoxTree& tree, const Eigen::Matrix3d& R,
-              const Eigen::Vector3d& T)
-      : B_(B), tree_(tree), R_(R), T_(T) {
+  PlacedBoxes(const BoxTree& tree, const Eigen::Matrix3d& R, const Eigen::Vector3d& T)
+      : tree_(tree) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) R_[3 * r + c] = Lanes{R(r, c), R(r, c)};
+      T_[r] = Lanes{T[r], T[r]};
+    }
     if (stamp_.size() < tree.boxes.size()) {
       boxes_.resize(tree.boxes.size());
       stamp_.assign(tree.boxes.size(), 0);
@@ -331,32 +338,22 @@ class PlacedBoxes {
   const BoxLanes& operator[](int k) {
     BoxLanes& p = boxes_[k];
     if (stamp_[k] != query_) {
-      const auto [n0, n1] = tree_.lanes(k);
-      for (int l = 0; l < 2; ++l) {
-        // As FCL places a box (R * axes, R * centre + T), so that a leaf test sees its bits.
-        const fcl::OBBd& obb = B_.getBV(l ? n1 : n0).bv.obb;
-        const Eigen::Matrix3d axis = R_ * obb.axis;
-        const Eigen::Vector3d centre = R_ * obb.To + T_;
-        for (int m = 0; m < 9; ++m) p.axis[m][l] = axis.data()[m];
-        for (int m = 0; m < 3; ++m) p.centre[m][l] = centre[m];
+      const BoxLanes& q = tree_.boxes[k];  // in B's frame
+      for (int r = 0; r < 3; ++r) {
+        const Lanes* Rr = R_ + 3 * r;
+        for (int i = 0; i < 3; ++i)
+          p.axis[3 * i + r] =
+              Rr[0] * q.axis[3 * i] + Rr[1] * q.axis[3 * i + 1] + Rr[2] * q.axis[3 * i + 2];
+        p.centre[r] = Rr[0] * q.centre[0] + Rr[1] * q.centre[1] + Rr[2] * q.centre[2] + T_[r];
       }
       stamp_[k] = query_;
     }
     return p;
   }
-  // Node n's placed box as FCL's types.
-  void get(int n, Eigen::Matrix3d& axis, Eigen::Vector3d& centre) {
-    const BoxLanes& p = (*this)[tree_.block_of(n)];
-    const int l = BoxTree::lane_of(n);
-    for (int m = 0; m < 9; ++m) axis.data()[m] = p.axis[m][l];
-    for (int m = 0; m < 3; ++m) centre[m] = p.centre[m][l];
-  }
 
  private:
-  const Model& B_;
   const BoxTree& tree_;
-  const Eigen::Matrix3d& R_;
-  const Eigen::Vector3d& T_;
+  Lanes R_[9], T_[3];  // R row by row, and T, each entry in both lanes
   static thread_local std::vector<BoxLanes> boxes_;
   static thread_local std::vector<unsigned> stamp_;
   static thread_local unsigned query_;
@@ -368,17 +365,15 @@ thread_local unsigned PlacedBoxes::query_ = 0;
 // FCL's traversal order (collisionRecurse: depth-first, the larger box split, a leaf never,
 // left child first) over the node pairs whose boxes are not `margin` apart (lanes_apart);
 // leaf pairs go to `leaf_pair(a, b)`, which returns false to stop. Each expansion tests the two
-// child pairs at once, before they are stacked, which changes the order of no visit. With
-// `test_leaves` false, leaf pairs are handed on untested.
+// child pairs at once, before they are stacked, which changes the order of no visit.
 template <typename LeafPair>
 bool traverse(const BoxTree& tree_A, const BoxTree& tree_B, PlacedBoxes& placed, double margin,
-              bool test_leaves, std::vector<std::pair<int, int>>& stack, LeafPair&& leaf_pair) {
+              std::vector<std::pair<int, int>>& stack, LeafPair&& leaf_pair) {
   stack.clear();
   const int root_A = tree_A.block_of(0), root_B = tree_B.block_of(0);
-  const bool root_leaves = tree_A.nodes[0].leaf() && tree_B.nodes[0].leaf();
-  if (!(root_leaves && !test_leaves) && (lanes_apart(tree_A.boxes[root_A], tree_A.sizes[root_A],
-                                                     placed[root_B], tree_B.sizes[root_B], margin) &
-                                         1))
+  if (lanes_apart(tree_A.boxes[root_A], tree_A.sizes[root_A], placed[root_B], tree_B.sizes[root_B],
+                  margin) &
+      1)
     return true;
   stack.emplace_back(0, 0);
   while (!stack.empty()) {
@@ -409,13 +404,6 @@ bool traverse(const BoxTree& tree_A, const BoxTree& tree_B, PlacedBoxes& placed,
       c0 = nb.first_child;
     }
     c1 = c0 + 1;
-    // Untested leaf pairs are kept whatever their boxes.
-    if (!test_leaves) {
-      const BoxTree& split = split_A ? tree_A : tree_B;
-      const bool other_leaf = split_A ? nb.leaf() : na.leaf();
-      if (other_leaf && split.nodes[c0].leaf()) apart &= ~1;
-      if (other_leaf && split.nodes[c1].leaf()) apart &= ~2;
-    }
     // Right child below left, so that the left one's pairs come first.
     if (!(apart & 2)) stack.emplace_back(split_A ? c1 : a, split_A ? b : c1);
     if (!(apart & 1)) stack.emplace_back(split_A ? c0 : a, split_A ? b : c0);
@@ -423,19 +411,21 @@ bool traverse(const BoxTree& tree_A, const BoxTree& tree_B, PlacedBoxes& placed,
   return true;
 }
 
-// Whether leaves a of A and b of B hold intersecting triangles (B placed in A's frame by R, T;
-// Rab, Tab place b's box in a's box frame): FCL's verdict, intersect_Triangle, where it could
-// differ, after tests that only decide pairs it decides alike (boxes apart on a face axis,
-// triangles_meet). FCL's full test of the leaves' boxes is left out: boxes holding
-// intersecting triangles overlap, so it rejects only pairs intersect_Triangle rejects.
-bool leaf_pair_intersects(const Model& A, const Model& B, int a, int b, const Eigen::Matrix3d& R,
-                          const Eigen::Vector3d& T, const Eigen::Matrix3d& Rab,
-                          const Eigen::Vector3d& Tab) {
-  const auto& na = A.getBV(a);
-  const auto& nb = B.getBV(b);
-  if (disjoint_on_face_axes(Rab, Tab, na.bv.obb.extent, nb.bv.obb.extent)) return false;
-  const fcl::Triangle& ta = A.tri_indices[na.primitiveId()];
-  const fcl::Triangle& tb = B.tri_indices[nb.primitiveId()];
+// Whether triangles tri_a of A and tri_b of B, of two leaves of the BVHs, intersect (B placed in
+// A's frame by R, T): FCL's verdict, intersect_Triangle, where it could differ, after tests that
+// only decide pairs it decides alike (the leaves' boxes apart on a face axis, triangles_meet).
+// FCL's full test of the leaves' boxes is left out: boxes holding intersecting triangles overlap,
+// so it rejects only pairs intersect_Triangle rejects. The verdict is the conjunction of the
+// face-axis test and the triangles' test, so their order is free: the triangles go first, since
+// most leaf pairs that reach here have overlapping boxes (the traversal tested them already) but
+// apart triangles (about 4 in 5 in Example 1), and `boxes_apart()` (the face-axis test on the
+// leaves' boxes as FCL places them) runs only for the pairs the triangles do not reject.
+template <typename BoxesApart>
+bool leaf_pair_intersects(const Model& A, const Model& B, int tri_a, int tri_b,
+                          const Eigen::Matrix3d& R, const Eigen::Vector3d& T,
+                          BoxesApart&& boxes_apart) {
+  const fcl::Triangle& ta = A.tri_indices[tri_a];
+  const fcl::Triangle& tb = B.tri_indices[tri_b];
   const Eigen::Vector3d& p1 = A.vertices[ta[0]];
   const Eigen::Vector3d& p2 = A.vertices[ta[1]];
   const Eigen::Vector3d& p3 = A.vertices[ta[2]];
@@ -443,9 +433,20 @@ bool leaf_pair_intersects(const Model& A, const Model& B, int a, int b, const Ei
   const Eigen::Vector3d q2 = R * B.vertices[tb[1]] + T;
   const Eigen::Vector3d q3 = R * B.vertices[tb[2]] + T;
   const TriangleMeet m = triangles_meet(p1, p2, p3, q1, q2, q3);
-  if (m != TriangleMeet::Unsure) return m == TriangleMeet::Intersect;
+  if (m == TriangleMeet::Apart || boxes_apart()) return false;
+  if (m == TriangleMeet::Intersect) return true;
   return fcl::detail::Intersect<double>::intersect_Triangle(
       p1, p2, p3, B.vertices[tb[0]], B.vertices[tb[1]], B.vertices[tb[2]], R, T);
+}
+
+// FCL's face-axis test of two leaves' boxes, oa of A and ob of B (B placed in A's frame by R,
+// T), with Rab and Tab as FCL forms them: ob placed (R * axes, R * centre + T), then taken
+// into oa's frame.
+bool leaf_boxes_apart(const fcl::OBBd& oa, const fcl::OBBd& ob, const Eigen::Matrix3d& R,
+                      const Eigen::Vector3d& T) {
+  const Eigen::Matrix3d Rab = oa.axis.transpose() * (R * ob.axis);
+  const Eigen::Vector3d Tab = (R * ob.To + T - oa.To).transpose() * oa.axis;
+  return disjoint_on_face_axes(Rab, Tab, oa.extent, ob.extent);
 }
 
 // Relative growth of the nearby-pairs margin over the displacement it must cover: round-off of
@@ -512,19 +513,18 @@ bool ContactContext::overlapping_triangles(const Pose& X_BA,
   relative_transform(X_BA, R, T);
   const Model& A = *models_->A;
   const Model& B = *models_->B;
-  PlacedBoxes placed(B, models_->tree_B, R, T);
+  PlacedBoxes placed(models_->tree_B, R, T);
   pairs.clear();
   thread_local std::vector<std::pair<int, int>> stack;
-  Eigen::Matrix3d axis_b;
-  Eigen::Vector3d centre_b;
-  return traverse(models_->tree_A, models_->tree_B, placed, 0, true, stack, [&](int a, int b) {
-    // FCL's leaf test, given Rab and Tab as FCL forms them from the placed boxes.
-    const fcl::OBBd& oa = A.getBV(a).bv.obb;
-    placed.get(b, axis_b, centre_b);
-    const Eigen::Matrix3d Rab = oa.axis.transpose() * axis_b;
-    const Eigen::Vector3d Tab = (centre_b - oa.To).transpose() * oa.axis;
-    if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) return true;
-    pairs.emplace_back(A.getBV(a).primitiveId(), B.getBV(b).primitiveId());
+  const BoxTree &tree_A = models_->tree_A, &tree_B = models_->tree_B;
+  return traverse(tree_A, tree_B, placed, 0, stack, [&](int a, int b) {
+    // FCL's leaf test.
+    const int tri_a = tree_A.nodes[a].primitive, tri_b = tree_B.nodes[b].primitive;
+    if (!leaf_pair_intersects(A, B, tri_a, tri_b, R, T, [&] {
+          return leaf_boxes_apart(A.getBV(a).bv.obb, B.getBV(b).bv.obb, R, T);
+        }))
+      return true;
+    pairs.emplace_back(tri_a, tri_b);
     return static_cast<int>(pairs.size()) < max_pairs;
   });
 }
@@ -564,16 +564,14 @@ NearbyTriangles ContactContext::nearby_triangles(const Pose& X_BA, double margin
   Eigen::Vector3d T;
   relative_transform(X_BA, R, T);
   const double grown = margin * (1 + kMarginRoundOff);
-  const Model& A = *models_->A;
-  const Model& B = *models_->B;
-  PlacedBoxes placed(B, models_->tree_B, R, T);
-  // FCL's order over node pairs. Inner pairs: the looser ball and face-axis tests (as in
-  // overlapping_triangles), which only let more pairs through to the leaves; leaf pairs: the
-  // grown boxes' face axes (overlap_within).
+  PlacedBoxes placed(models_->tree_B, R, T);
+  // FCL's order over node pairs, each pair tested by the looser ball and face-axis tests of
+  // overlapping_triangles with the boxes grown by the margin (a box grown so holds every point
+  // within the margin of it), leaf pairs included: the set keeps every leaf pair that may
+  // overlap within the margin, in the order a full query meets them.
   std::vector<std::pair<int, int>> stack;
   out.complete =
-      traverse(models_->tree_A, models_->tree_B, placed, grown, false, stack, [&](int a, int b) {
-        if (!overlap_within(R, T, A.getBV(a).bv.obb, B.getBV(b).bv.obb, grown)) return true;
+      traverse(models_->tree_A, models_->tree_B, placed, grown, stack, [&](int a, int b) {
         if (out.leaves.size() >= kMaxNearbyLeaves) return false;
         out.leaves.emplace_back(a, b);
         return true;
@@ -635,16 +633,16 @@ bool ContactContext::overlapping_triangles_near(const Pose& X_BA, const NearbyTr
   const Model& A = *models_->A;
   const Model& B = *models_->B;
   pairs.clear();
+  const BoxTree &tree_A = models_->tree_A, &tree_B = models_->tree_B;
   for (const auto& [a, b] : near.leaves) {
-    const auto& na = A.getBV(a);
-    const auto& nb = B.getBV(b);
-    // FCL's leaf test (with its cheaper rejections first).
-    const fcl::OBBd &oa = na.bv.obb, &ob = nb.bv.obb;
-    const Eigen::Matrix3d Rab = oa.axis.transpose() * (R * ob.axis);
-    const Eigen::Vector3d Tab = (R * ob.To + T - oa.To).transpose() * oa.axis;
-    if (!leaf_pair_intersects(A, B, a, b, R, T, Rab, Tab)) continue;
+    // FCL's leaf test.
+    const int tri_a = tree_A.nodes[a].primitive, tri_b = tree_B.nodes[b].primitive;
+    if (!leaf_pair_intersects(A, B, tri_a, tri_b, R, T, [&] {
+          return leaf_boxes_apart(A.getBV(a).bv.obb, B.getBV(b).bv.obb, R, T);
+        }))
+      continue;
     if (static_cast<int>(pairs.size()) >= max_pairs - 1) return false;
-    pairs.emplace_back(na.primitiveId(), nb.primitiveId());
+    pairs.emplace_back(tri_a, tri_b);
   }
   return true;
 }
