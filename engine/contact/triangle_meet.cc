@@ -33,8 +33,9 @@ struct PlaneSides {
   Eigen::Vector3d n;
   double d[3];
   // |n|_1 and reach_1 = |e1|_1 + |e2|_1 + max |r_i|_1, the bounds of |n| and of the reach;
-  // `bounded` where they are below kNoOverflow.
-  double n1 = 0, reach1 = 0;
+  // `bounded` where they are below kNoOverflow; slack_bound, an upper bound on the computed
+  // slack from them (infinite where they do not hold).
+  double n1 = 0, reach1 = 0, slack_bound = INFINITY;
   bool bounded = false;
   // kPlaneRoundOff * |n| * reach, with reach = |e1| + |e2| + max |r_i|, computed only where a
   // verdict needs them (have_slack).
@@ -46,10 +47,6 @@ struct PlaneSides {
     slack = kPlaneRoundOff * n.norm() * reach;
     have_slack = true;
   }
-  // An upper bound on the computed slack (infinite where the bounds do not hold).
-  double slack_bound() const {
-    return bounded ? kPlaneRoundOff * n1 * reach1 * (1 + kBoundRoom) : INFINITY;
-  }
   // All three points clearly on one side (every d_i > slack, or every d_i < -slack): the
   // triangles cannot meet.
   bool one_side() {
@@ -57,14 +54,14 @@ struct PlaneSides {
     const bool below = d[0] < 0 && d[1] < 0 && d[2] < 0;
     if (!above && !below) return false;
     const double least = std::min({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
-    if (least > slack_bound()) return true;
+    if (least > slack_bound) return true;
     compute_slack();
     return least > slack;
   }
   // no point within round-off of the plane
   bool clear() {
-    const double bound = slack_bound();
-    if (std::abs(d[0]) > bound && std::abs(d[1]) > bound && std::abs(d[2]) > bound) return true;
+    const double b = slack_bound;
+    if (std::abs(d[0]) > b && std::abs(d[1]) > b && std::abs(d[2]) > b) return true;
     compute_slack();
     return std::abs(d[0]) > slack && std::abs(d[1]) > slack && std::abs(d[2]) > slack;
   }
@@ -84,6 +81,7 @@ PlaneSides plane_sides(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
   s.n1 = l1(s.n);
   s.reach1 = l1(s.e1) + l1(s.e2) + std::max({l1(s.r[0]), l1(s.r[1]), l1(s.r[2])});
   s.bounded = s.n1 < kNoOverflow && s.reach1 < kNoOverflow;
+  if (s.bounded) s.slack_bound = kPlaneRoundOff * s.n1 * s.reach1 * (1 + kBoundRoom);
   return s;
 }
 
