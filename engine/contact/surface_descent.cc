@@ -56,24 +56,37 @@ SurfaceDescent descend_into(const Solid& solid, int face, const Pose& X, const S
   const Polynomial& g = solid.surfaces[surface];
   const Polynomial& h = other.surfaces[other_surface];
   const Eigen::Matrix3d R_T = X.rotation().transpose();
-  SurfaceDescent cur{start, signed_distance(h, X.apply(start), nullptr)};
+  Eigen::Vector3d t = Eigen::Vector3d::Zero(), n_other = Eigen::Vector3d::Zero();
+  SurfaceDescent cur{start, signed_distance(h, X.apply(start), &n_other)};
   double step = kFirstStep * length_scale;
+  // The descent direction at cur.point, and its norm: recomputed only when the point moves (a
+  // rejected step changes only the step length, so its successor would repeat the same
+  // evaluations). The other surface's unit normal at an accepted point comes from the distance
+  // evaluation that placed it there (the same evaluation at the same point), where finite.
+  double tn = 0;
+  bool moved = true, have_n_other = std::isfinite(cur.distance);
   for (int it = 0; it < iterations && step > kSmallestStep * length_scale; ++it) {
-    if (strictly_inside(other, X.apply(cur.point), proof_depth)) break;  // proved
-    // the other surface's unit normal, in this solid's frame, less its part along the face's
-    Eigen::Vector3d n_other = Eigen::Vector3d::Zero(), n_face = Eigen::Vector3d::Zero();
-    if (!std::isfinite(signed_distance(h, X.apply(cur.point), &n_other)) ||
-        !std::isfinite(signed_distance(g, cur.point, &n_face)))
-      break;
-    Eigen::Vector3d t = R_T * n_other;
-    t -= n_face * n_face.dot(t);
-    const double tn = t.norm();
-    if (!(tn > 0)) break;  // stationary: the normals are parallel
+    if (moved) {
+      if (strictly_inside(other, X.apply(cur.point), proof_depth)) break;  // proved
+      // the other surface's unit normal, in this solid's frame, less its part along the face's
+      Eigen::Vector3d n_face = Eigen::Vector3d::Zero();
+      if (!have_n_other && !std::isfinite(signed_distance(h, X.apply(cur.point), &n_other))) break;
+      if (!std::isfinite(signed_distance(g, cur.point, &n_face))) break;
+      t = R_T * n_other;
+      t -= n_face * n_face.dot(t);
+      tn = t.norm();
+      if (!(tn > 0)) break;  // stationary: the normals are parallel
+      moved = false;
+    }
     const Eigen::Vector3d q = onto_surface(g, cur.point - (step / tn) * t);
-    const double d = signed_distance(h, X.apply(q), nullptr);
+    Eigen::Vector3d n_q;
+    const double d = signed_distance(h, X.apply(q), &n_q);
     if (d < cur.distance && within_face(solid, surface, q)) {
       cur = {q, d};
+      n_other = n_q;
+      have_n_other = std::isfinite(d);
       step *= 2;
+      moved = true;
     } else {
       step *= 0.5;
     }
