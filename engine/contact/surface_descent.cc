@@ -62,15 +62,16 @@ SurfaceDescent descend_into(const Solid& solid, int face, const Pose& X, const S
   // The descent direction at cur.point, and its norm: recomputed only when the point moves (a
   // rejected step changes only the step length, so its successor would repeat the same
   // evaluations). The other surface's unit normal at an accepted point comes from the distance
-  // evaluation that placed it there (the same evaluation at the same point), where finite.
+  // evaluation that placed it there (the same evaluation at the same point), as does
+  // cur.distance, so a point whose distance is not finite stops the descent as before.
   double tn = 0;
-  bool moved = true, have_n_other = std::isfinite(cur.distance);
+  bool moved = true;
   for (int it = 0; it < iterations && step > kSmallestStep * length_scale; ++it) {
     if (moved) {
       if (strictly_inside(other, X.apply(cur.point), proof_depth)) break;  // proved
       // the other surface's unit normal, in this solid's frame, less its part along the face's
       Eigen::Vector3d n_face = Eigen::Vector3d::Zero();
-      if (!have_n_other && !std::isfinite(signed_distance(h, X.apply(cur.point), &n_other))) break;
+      if (!std::isfinite(cur.distance)) break;
       if (!std::isfinite(signed_distance(g, cur.point, &n_face))) break;
       t = R_T * n_other;
       t -= n_face * n_face.dot(t);
@@ -84,7 +85,6 @@ SurfaceDescent descend_into(const Solid& solid, int face, const Pose& X, const S
     if (d < cur.distance && within_face(solid, surface, q)) {
       cur = {q, d};
       n_other = n_q;
-      have_n_other = std::isfinite(d);
       step *= 2;
       moved = true;
     } else {
