@@ -449,6 +449,15 @@ bool leaf_boxes_apart(const fcl::OBBd& oa, const fcl::OBBd& ob, const Eigen::Mat
   return disjoint_on_face_axes(Rab, Tab, oa.extent, ob.extent);
 }
 
+// FCL's leaf test of leaf nodes a of A and b of B (B placed in A's frame by R, T): whether
+// their triangles intersect (leaf_pair_intersects, with the leaves' boxes as FCL places them).
+bool leaves_intersect(const Model& A, const Model& B, const BoxTree& tree_A, const BoxTree& tree_B,
+                      int a, int b, const Eigen::Matrix3d& R, const Eigen::Vector3d& T) {
+  return leaf_pair_intersects(
+      A, B, tree_A.nodes[a].primitive, tree_B.nodes[b].primitive, R, T,
+      [&] { return leaf_boxes_apart(A.getBV(a).bv.obb, B.getBV(b).bv.obb, R, T); });
+}
+
 // Relative growth of the nearby-pairs margin over the displacement it must cover: round-off of
 // the box tests is ~1e-15 relative, so 1e-6 covers it with room while adding no pairs.
 constexpr double kMarginRoundOff = 1e-6;
@@ -518,13 +527,8 @@ bool ContactContext::overlapping_triangles(const Pose& X_BA,
   thread_local std::vector<std::pair<int, int>> stack;
   const BoxTree &tree_A = models_->tree_A, &tree_B = models_->tree_B;
   return traverse(tree_A, tree_B, placed, 0, stack, [&](int a, int b) {
-    // FCL's leaf test.
-    const int tri_a = tree_A.nodes[a].primitive, tri_b = tree_B.nodes[b].primitive;
-    if (!leaf_pair_intersects(A, B, tri_a, tri_b, R, T, [&] {
-          return leaf_boxes_apart(A.getBV(a).bv.obb, B.getBV(b).bv.obb, R, T);
-        }))
-      return true;
-    pairs.emplace_back(tri_a, tri_b);
+    if (!leaves_intersect(A, B, tree_A, tree_B, a, b, R, T)) return true;
+    pairs.emplace_back(tree_A.nodes[a].primitive, tree_B.nodes[b].primitive);
     return static_cast<int>(pairs.size()) < max_pairs;
   });
 }
@@ -635,14 +639,9 @@ bool ContactContext::overlapping_triangles_near(const Pose& X_BA, const NearbyTr
   pairs.clear();
   const BoxTree &tree_A = models_->tree_A, &tree_B = models_->tree_B;
   for (const auto& [a, b] : near.leaves) {
-    // FCL's leaf test.
-    const int tri_a = tree_A.nodes[a].primitive, tri_b = tree_B.nodes[b].primitive;
-    if (!leaf_pair_intersects(A, B, tri_a, tri_b, R, T, [&] {
-          return leaf_boxes_apart(A.getBV(a).bv.obb, B.getBV(b).bv.obb, R, T);
-        }))
-      continue;
+    if (!leaves_intersect(A, B, tree_A, tree_B, a, b, R, T)) continue;
     if (static_cast<int>(pairs.size()) >= max_pairs - 1) return false;
-    pairs.emplace_back(tri_a, tri_b);
+    pairs.emplace_back(tree_A.nodes[a].primitive, tree_B.nodes[b].primitive);
   }
   return true;
 }
