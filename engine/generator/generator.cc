@@ -1765,9 +1765,9 @@ StateGraph Builder::run() {
         grow(id);
       }
       // The met state is `from` plus one contact: removing it (the reverse of the motion
-      // that met it) leads back down to `from`, an LN transition.
-      add_link(id, from,
-               "separation (reverse of a motion from state " + std::to_string(from) + ")");
+      // that met it) leads back down to `from`, an LN transition. (The label names no state:
+      // merge_united_states renumbers them, and the link's images keep the label.)
+      add_link(id, from, "separation (reverse of the motion that met it)");
     }
     const size_t states = graph_.states.size(), found = discoveries_.size();
     retry_from_other_witnesses();

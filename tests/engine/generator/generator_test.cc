@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <string>
@@ -235,6 +236,27 @@ TEST(Generator, Example2HoldsEveryStateFoundSoFar) {
   // and every CF of the quick search's graph
   for (const std::string& cf : testing::read_signature("example2").states)
     EXPECT_TRUE(cfs.count(cf)) << cf;
+}
+
+// A link's motion label names no state other than the link's own ends. Until session 64 the
+// separation from a state met from below was labelled "reverse of a motion from state N" with
+// the id before merge_united_states renumbered the states, and its images (", mirrored") kept
+// the source's N: each of Example 2's four such labels named a state that is neither end
+// (Example 1 has no such link).
+TEST(Generator, Example2LinkLabelsNameOnlyTheLinksOwnStates) {
+  const Generated& g = example2();
+  for (const Link& l : g.graph.links) {
+    const std::string& label = l.motion;
+    for (size_t at = label.find("state "); at != std::string::npos;
+         at = label.find("state ", at + 1)) {
+      const size_t digits = at + 6;
+      if (digits >= label.size() || !std::isdigit(static_cast<unsigned char>(label[digits])))
+        continue;
+      const int id = std::stoi(label.substr(digits));
+      EXPECT_TRUE(id == l.from || id == l.to)
+          << "link " << l.from << " -> " << l.to << " labelled \"" << label << "\"";
+    }
+  }
 }
 
 TEST(Generator, JsonIsByteIdenticalWithOneOrTwoThreads) {
