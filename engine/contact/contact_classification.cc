@@ -211,6 +211,7 @@ ResolvedContact resolve_contact(const SceneGeometry& scene, const Pose& X_BA, El
                                 ElementId b, const Eigen::Vector3d& start_A,
                                 const Eigen::Vector3d& start_B) {
   ResolvedContact out;
+  const int max_iterations = scene.tol.detection_solve_max_iterations;
   Eigen::Vector3d sA = start_A, sB = start_B;
   // The pairs visited and their solutions. A cycle happens only at a tie of the boundary and
   // cone tests (a contact on an element's boundary, within the tolerances): the
@@ -236,7 +237,7 @@ ResolvedContact resolve_contact(const SceneGeometry& scene, const Pose& X_BA, El
     }
     visited.push_back({a, b});
     const PtcType type = ptc_type_between(a.kind, b.kind);
-    PairSolution sol = solve_pair_problem(scene, X_BA, a, b, type, sA, sB);
+    PairSolution sol = solve_pair_problem(scene, X_BA, a, b, type, sA, sB, max_iterations);
     if (type == PtcType::EECross) {
       // Nearly parallel tangents: the common perpendicular is poorly determined; the touch
       // formulation decides whether they are parallel (pair_touch.h).
@@ -246,7 +247,8 @@ ResolvedContact resolve_contact(const SceneGeometry& scene, const Pose& X_BA, El
       if (near_parallel) {
         const Eigen::Vector3d tA = sol.converged ? sol.contact.p_A : sA;
         const Eigen::Vector3d tB = sol.converged ? sol.contact.p_B : sB;
-        PairSolution touch = solve_pair_problem(scene, X_BA, a, b, PtcType::EETouch, tA, tB);
+        PairSolution touch =
+            solve_pair_problem(scene, X_BA, a, b, PtcType::EETouch, tA, tB, max_iterations);
         if (touch.converged &&
             touch.contact.tangent_a_B.cross(touch.contact.tangent_b_B).norm() <
                 scene.tol.collinear_sine)

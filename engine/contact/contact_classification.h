@@ -37,7 +37,8 @@ double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const Poi
 
 // Follows redirections from a candidate pair and starting points to a classified solution.
 // e-e pairs are solved as crossing edges first and as touching edges when their tangents are
-// nearly parallel (Tolerances::near_collinear_sine).
+// nearly parallel (Tolerances::near_collinear_sine). The solves run at most
+// Tolerances::detection_solve_max_iterations.
 struct ResolvedContact {
   bool found = false;     // a converged, classified solution
   bool minimum = false;   // it is a local minimum of the distance (a contact when |gap| small)

@@ -9,11 +9,11 @@ namespace pcsg {
 namespace {
 
 // For a pair solved at coordinates of size `coordinate_size` (B's frame).
-NewtonOptions newton_options(const Tolerances& tol, double coordinate_size) {
+NewtonOptions newton_options(const Tolerances& tol, double coordinate_size, int max_iterations) {
   NewtonOptions o;
   o.length_scale = tol.length_scale;
   o.residual = tol.residual_at(coordinate_size);
-  o.max_iterations = tol.solve_max_iterations;
+  o.max_iterations = max_iterations;
   return o;
 }
 
@@ -37,10 +37,17 @@ double tangents_sine(const SceneGeometry& scene, const Pose& X_BA, ElementId a, 
 PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
                                 ElementId b, PtcType type, const Eigen::Vector3d& start_A,
                                 const Eigen::Vector3d& start_B) {
+  return solve_pair_problem(scene, X_BA, a, b, type, start_A, start_B,
+                            scene.tol.solve_max_iterations);
+}
+
+PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
+                                ElementId b, PtcType type, const Eigen::Vector3d& start_A,
+                                const Eigen::Vector3d& start_B, int max_iterations) {
   const PairSetup setup = PairSetup::make(scene, X_BA, a, b);
   // A's points enter B's frame at |t| + |p_A| at most.
-  const NewtonOptions options =
-      newton_options(scene.tol, std::max(setup.t.norm() + start_A.norm(), start_B.norm()));
+  const NewtonOptions options = newton_options(
+      scene.tol, std::max(setup.t.norm() + start_A.norm(), start_B.norm()), max_iterations);
   PairSolution out;
   PointContact& c = out.contact;
   c.a = a;

@@ -21,9 +21,13 @@ struct PairSolution {
 // pair_touch.h) from the starting points, and fills the contact on convergence. An e-e-touch
 // solve also converges where the tangents are not aligned (its residual's third row says by
 // how much); classification decides whether they are collinear.
+// Newton runs at most `max_iterations` (the first overload: Tolerances::solve_max_iterations).
 PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
                                 ElementId b, PtcType type, const Eigen::Vector3d& start_A,
                                 const Eigen::Vector3d& start_B);
+PairSolution solve_pair_problem(const SceneGeometry& scene, const Pose& X_BA, ElementId a,
+                                ElementId b, PtcType type, const Eigen::Vector3d& start_A,
+                                const Eigen::Vector3d& start_B, int max_iterations);
 
 // Fills point_B, tangents, residual and jacobian of a contact whose a, b, type, p_A, p_B,
 // gap and normal_B are set (the rules are in contact.h's PointContact comment).

@@ -37,6 +37,12 @@ struct Tolerances {
   // Newton iteration cap: quadratic convergence needs < 10 from a mesh-quality start; 50 leaves
   // room for damped steps from poor starts without hiding divergence.
   int solve_max_iterations = 50;
+  // ... and for detection's solves from mesh starts (resolve_contact): converged ones take 4.85
+  // iterations on average, 393 of a million 30 or more (Example 1), and the ones that never
+  // converge cost 25% of Example 2's CPU; a failed start is retried (normal cone, other starts of
+  // the region). Measured with 30: Example 1's graph unchanged bit for bit, Example 2's states
+  // and linked pairs unchanged (docs/where-the-time-goes.md, sessions 63-64).
+  int detection_solve_max_iterations = 30;
   // Two faces meet tangentially (no proper edge) when the sine of their normals' angle on the
   // common curve is below this (dimensionless): an edge point is then located only to
   // solve_residual / sine = 1e-9 L, the size of contact_gap.

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "engine/contact/contact.h"
+#include "engine/contact/contact_classification.h"
 #include "engine/contact/pair_solver.h"
 #include "engine/geometry/scene_geometry.h"
 #include "engine/scene/scene.h"
@@ -91,6 +92,33 @@ TEST(SolvePair, ConvergesAtTheRoundOffOfFarCoordinates) {
       EXPECT_LT((sol.contact.p_B - (centre + 4 * u)).norm(), 1e-9 * scene.tol.length_scale);
     }
   EXPECT_EQ(converged, solves);
+}
+
+// Detection's solves (resolve_contact) stop at Tolerances::detection_solve_max_iterations, the
+// other solves at solve_max_iterations: from a start a quarter turn off the contact, the pair
+// needs m iterations; detection finds the contact with a cap of m and reports a solve that does
+// not converge with m - 1, whatever solve_max_iterations says.
+TEST(SolvePair, DetectionsSolvesStopAtTheirOwnIterationCap) {
+  SceneGeometry scene =
+      testkit::scene_of(testkit::sphere_solid(1, "fA"), testkit::sphere_solid(2, "fB"));
+  const ElementId a = scene.A.find("fA"), b = scene.B.find("fB");
+  const Pose X = at({3.5, 0, 0});
+  const Eigen::Vector3d start_A(0, 0, -1), start_B(0, 2, 0);
+  int m = 1;
+  while (m <= scene.tol.solve_max_iterations &&
+         !solve_pair_problem(scene, X, a, b, PtcType::FF, start_A, start_B, m).converged)
+    ++m;
+  ASSERT_LE(m, scene.tol.solve_max_iterations);
+  ASSERT_GE(m, 3) << "the start must need several iterations";
+  scene.tol.solve_max_iterations = 2 * m;
+  scene.tol.detection_solve_max_iterations = m;
+  const ResolvedContact found = resolve_contact(scene, X, a, b, start_A, start_B);
+  ASSERT_TRUE(found.found && found.minimum) << found.reason;
+  EXPECT_NEAR(found.contact.gap, 0.5, kExact * scene.tol.length_scale);
+  scene.tol.detection_solve_max_iterations = m - 1;
+  const ResolvedContact capped = resolve_contact(scene, X, a, b, start_A, start_B);
+  EXPECT_FALSE(capped.found);
+  EXPECT_TRUE(capped.diverged);
 }
 
 TEST(SolvePair, RejectsATypeThatDoesNotJoinTheElements) {
