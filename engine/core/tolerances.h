@@ -41,7 +41,9 @@ struct Tolerances {
   // iterations on average, 393 of a million 30 or more (Example 1), and the ones that never
   // converge cost 25% of Example 2's CPU; a failed start is retried (normal cone, other starts of
   // the region). Measured with 30: Example 1's graph unchanged bit for bit, Example 2's states
-  // and linked pairs unchanged (docs/where-the-time-goes.md, sessions 63-64).
+  // and linked pairs unchanged, the torus's graph unchanged although 5.8% of its converged
+  // solves need 30 or more (nearly conformal rings); 20 loses 3 of the torus's 15 states
+  // (docs/where-the-time-goes.md, sessions 63-65).
   int detection_solve_max_iterations = 30;
   // Two faces meet tangentially (no proper edge) when the sine of their normals' angle on the
   // common curve is below this (dimensionless): an edge point is then located only to
