@@ -1,8 +1,7 @@
 #include "engine/contact/contact_classification.h"
 
-#include <limits>
-
 #include <Eigen/Dense>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -168,6 +167,10 @@ double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const Poi
     default:
       return std::numeric_limits<double>::infinity();
   }
+}
+
+bool is_ring_contact(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c) {
+  return std::abs(sliding_curvature(scene, X_BA, c)) < scene.tol.ring_curvature;
 }
 
 bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c) {

@@ -34,6 +34,10 @@ bool is_local_minimum(const SceneGeometry& scene, const Pose& X_BA, const PointC
 // contact's points can slide (infinite for the other types): near zero next to a bifurcation
 // where two local minima of the pair merge.
 double sliding_curvature(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c);
+// Whether an f-f, f-e or e-f contact touches along a curve rather than at a point: its sliding
+// curvature vanishes within Tolerances::ring_curvature (a torus against a sphere centred on its
+// axis). Such a pose is not a point-contact configuration (paper Section II).
+bool is_ring_contact(const SceneGeometry& scene, const Pose& X_BA, const PointContact& c);
 
 // Follows redirections from a candidate pair and starting points to a classified solution.
 // e-e pairs are solved as crossing edges first and as touching edges when their tangents are

@@ -42,8 +42,8 @@ struct Tolerances {
   // converge cost 25% of Example 2's CPU; a failed start is retried (normal cone, other starts of
   // the region). Measured with 30: Example 1's graph unchanged bit for bit, Example 2's states
   // and linked pairs unchanged, the torus's graph unchanged although 5.8% of its converged
-  // solves need 30 or more (nearly conformal rings); 20 loses 3 of the torus's 15 states
-  // (docs/where-the-time-goes.md, sessions 63-65).
+  // solves need 30 or more (nearly conformal rings); 20 lost the torus's 3 ring-contact states
+  // before ring_curvature took them out (docs/where-the-time-goes.md, sessions 63-65).
   int detection_solve_max_iterations = 30;
   // Two faces meet tangentially (no proper edge) when the sine of their normals' angle on the
   // common curve is below this (dimensionless): an edge point is then located only to
@@ -110,6 +110,13 @@ struct Tolerances {
   // 55.0 s with them. (Detection also solves again, after minima, saddles and failed solves,
   // from witnesses farther than seed_separation from every start: contact_detection.cc.)
   double bifurcation_curvature = 0.1;
+  // A face contact (f-f, f-e, e-f) whose relative curvature along a sliding direction is
+  // below this (1/length) in magnitude touches along a curve, not at a point (a ring contact:
+  // a torus against a sphere centred on its axis), and its pose is no point-contact state's
+  // witness. Measured (session 65, sliding_curvature times L): the torus's ring contacts
+  // 7.6e-11 to 1.2e-10 (round-off), the least genuine contact 2.3e-4 (the torus nearly coaxial
+  // in the dish), Example 1 >= 0.158, Example 2 >= 3.6; 1e-6 lies 4 decades from both.
+  double ring_curvature = 1e-6;
   // Projection onto a contact formation: largest translation (and rotation times L) of one
   // Gauss-Newton step, 0.05 L, inside the basin of the pair solves; and an iteration cap
   // (quadratic convergence needs < 10 from a motion step away).
@@ -163,6 +170,7 @@ struct Tolerances {
     t.rate_step *= L;
     t.curvature /= L;  // a curvature: 1/length
     t.bifurcation_curvature /= L;
+    t.ring_curvature /= L;
     t.candidate_band *= L;
     t.projection_step *= L;
     t.seed_separation *= L;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "engine/contact/contact_classification.h"
 #include "engine/contact/convex_support.h"
 #include "engine/contact/pair_seeds.h"
 #include "engine/generator/cf_parameter_path.h"
@@ -23,6 +24,22 @@ namespace pcsg {
 
 namespace {
 using RegionSignatures = std::vector<RegionSignature>;
+
+// Whether A touches B along a curve somewhere at this pose (is_ring_contact): not a
+// point-contact configuration, so never a witness (a seed, a motion's end, a projection).
+bool touches_along_a_curve(const SceneGeometry& scene, const Pose& pose,
+                           const std::vector<PointContact>& contacts) {
+  return std::any_of(contacts.begin(), contacts.end(),
+                     [&](const PointContact& c) { return is_ring_contact(scene, pose, c); });
+}
+
+// A feasible transition whose motion ends touching along a curve reaches no state.
+void refuse_curve_contact_end(const SceneGeometry& scene, const Pose& end,
+                              const std::vector<PointContact>& contacts, Candidate& c) {
+  if (!c.feasible || !touches_along_a_curve(scene, end, contacts)) return;
+  c.feasible = false;
+  c.reason = c.motion + ": ends touching along a curve (a ring contact), not at points";
+}
 }  // namespace
 
 std::vector<MotionVariant> motion_variants() {
@@ -987,6 +1004,7 @@ bool Builder::project_upward() {
     const ProjectionResult& p = *results[j];
     const ContactFormation& cf = targets[j / turns.size()].cf;
     if (!seen.insert({cf, region_signature(p.contacts)}).second) continue;
+    if (touches_along_a_curve(scene_, p.pose, p.contacts)) continue;
     if (find_state(cf, p.pose, p.contacts) >= 0) continue;
     if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
     grow(add_state(cf, p.pose, p.contacts, true, 0));
@@ -1079,6 +1097,7 @@ void Builder::grow(int seed_id) {
       for (size_t k = 0; k < r.targets.size(); ++k) {
         Reached& t = r.targets[k];
         Candidate& c = t.candidate;
+        refuse_curve_contact_end(scene_, t.outcome.end, t.outcome.contacts, c);
         if (c.feasible) {
           int to = find_state(c.cf, t.outcome.end, t.outcome.contacts, &ahead[j][k]);
           if (to < 0 && static_cast<int>(graph_.states.size()) < options_.max_states) {
@@ -1450,6 +1469,7 @@ void Builder::retry_from_other_witnesses() {
           // Each signature reached is a region the graph does not have (`wanted`).
           std::vector<int> reached;
           for (Reached& t : r.targets) {
+            refuse_curve_contact_end(scene_, t.outcome.end, t.outcome.contacts, t.candidate);
             if (!t.candidate.feasible) continue;
             const int to =
                 add_state(h.cf, t.outcome.end, t.outcome.contacts, false, from.depth + 1);
@@ -1735,6 +1755,7 @@ StateGraph Builder::run() {
     // region, and a failed connectivity motion does not prove one; it is left out (a CF that
     // is new to the graph always seeds). Listed seeds are checked for connectivity.
     if (scene_.spec.auto_seeds && holds_cf(sc.cf)) continue;
+    if (touches_along_a_curve(scene_, sc.pose, sc.contacts)) continue;
     const int existing = find_state(sc.cf, sc.pose, sc.contacts);
     if (existing >= 0) {
       if (!scene_.spec.auto_seeds) graph_.states[existing].seed = true;
@@ -1758,6 +1779,7 @@ StateGraph Builder::run() {
     for (; k < discoveries_.size() && !cancelled(); ++k) {
       const auto [from, d] = discoveries_[k];
       if (static_cast<int>(graph_.states.size()) >= options_.max_states) break;
+      if (touches_along_a_curve(scene_, d.pose, d.contacts)) continue;
       int id = find_state(d.cf, d.pose, d.contacts,
                           k - first < ahead.size() ? &ahead[k - first] : nullptr);
       if (id < 0) {
@@ -1781,7 +1803,7 @@ StateGraph Builder::run() {
       bool seeded = false;
       for (const SeedCandidate& sc : off_centre) {
         if (cancelled()) break;
-        if (holds_cf(sc.cf)) continue;
+        if (holds_cf(sc.cf) || touches_along_a_curve(scene_, sc.pose, sc.contacts)) continue;
         grow(add_state(sc.cf, sc.pose, sc.contacts, true, 0));
         seeded = true;
       }

@@ -54,9 +54,9 @@ void expect_own_frames_graph(const Generated& g) {
   testing::expect_witnesses_valid(g);
 }
 
-// Open since added (session 65): the own frame's ring-contact states (below) are missing,
+// Failed when added (session 65): the own frame's ring-contact states (below) were missing,
 // {(fA-e2, 2), (fA-f2, 1)} (two states) and {(fA-e2, 2), (fA-f2, 2)} with their 8 distinct links;
-// the other 12 states and their links agree.
+// the other 12 states and their links agreed. Passes since no witness touches along a curve.
 TEST(Validation, TorusAtLengthUnit1eMinus3) {
   expect_own_frames_graph(testing::generate(
       scaled_scene(load_scene_file(testing::scene_path("torus.yaml")), 1e-3), GeneratorOptions{}));
@@ -67,13 +67,14 @@ TEST(Validation, TorusAtLengthUnit1e3) {
       scaled_scene(load_scene_file(testing::scene_path("torus.yaml")), 1e3), GeneratorOptions{}));
 }
 
-// Open since added (session 65): 13 states and 66 links against the own frame's 15 and 80 (the
-// same with detection's solves capped at 30 or 50 iterations). The own frame's
-// {(fA-e2, 2), (fA-f2, 1)} (two states) and {(fA-e2, 2), (fA-f2, 2)} are missing and
-// {(fA-e1, 2), (fA-f2, 1)} is new. At the witnesses of all four the torus's axis passes through
-// the centre of B's sphere band f2 and the tube touches f2 along an arc (relative curvature
+// Failed when added (session 65): 13 states and 66 links against the own frame's 15 and 80
+// (the same with detection's solves capped at 30 or 50 iterations). The own frame's
+// {(fA-e2, 2), (fA-f2, 1)} (two states) and {(fA-e2, 2), (fA-f2, 2)} were missing and
+// {(fA-e1, 2), (fA-f2, 1)} new. At the witnesses of all four the torus's axis passed through
+// the centre of B's sphere band f2 and the tube touched f2 along an arc (relative curvature
 // zero to round-off): ring contacts, not point contacts, whose reported points depend on the
-// frame (docs/paper-comparison.md, "The torus in other frames and units").
+// frame (docs/paper-comparison.md, "The torus in other frames and units"). Passes since no
+// witness touches along a curve (Tolerances::ring_curvature): 12 states, 58 links.
 TEST(Validation, TorusMovedByASmallRigidMotion) {
   expect_own_frames_graph(testing::generate(
       load_scene_file(testing::stress_path("torus_moved.yaml")), GeneratorOptions{}));

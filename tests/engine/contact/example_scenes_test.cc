@@ -218,6 +218,42 @@ TEST(ExampleScenes, TorusRingAroundTheConvexBottomIsAPenetration) {
   EXPECT_TRUE(rep.penetrating()) << ContactFormation::of(rep.contacts).str(g);
 }
 
+// The torus across B's lower rim e2 with its axis through the centre of the sphere band f2
+// (to 4e-11): the tube lies on f2 along an arc (a torus against a sphere centred on its axis),
+// which detection reads as two f2 points, a reading that depended on the frame (the generator's
+// witness of {(fA-e2, 2), (fA-f2, 2)} until session 65). Those contacts are ring contacts
+// (relative curvature 1e-10 / L, round-off), the rim's are not; nor is the torus tipped in the
+// dish, the least curved genuine contact of the scene (2.3e-4 / L).
+TEST(ExampleScenes, TorusLyingOnTheSphereBandAlongAnArcIsARingContact) {
+  const SceneGeometry g =
+      build_scene_geometry(load_scene_file(std::string(PCSG_SOURCE_DIR) + "/scenes/torus.yaml"));
+  const double L = g.tol.length_scale;
+  const Pose on_arc = parse_pose(
+      "3.189307998990926 -2.720009906826445 0.6556375479968032 0.7568991973777314 "
+      "0.3772573169813409 0.5295368643918187 -0.06611528600155024");
+  const ContactReport rep = detect_contacts(g, on_arc);
+  ASSERT_FALSE(rep.penetrating());
+  int rings = 0;
+  for (const PointContact& c : rep.contacts) {
+    const bool band = g.B.element_name(c.b) == "f2";
+    EXPECT_EQ(is_ring_contact(g, on_arc, c), band) << g.B.element_name(c.b);
+    if (band) {
+      EXPECT_LT(std::abs(sliding_curvature(g, on_arc, c)) * L, 1e-9);
+    }
+    rings += band;
+  }
+  EXPECT_GE(rings, 1);
+  const Pose tipped = parse_pose(
+      "0.47096441999041977 0.9844821168042532 1.0624485386532692 0.9639289258016229 "
+      "0.2400917153733429 -0.11487815037750736 6.912205091970483e-05");
+  const ContactReport dish = detect_contacts(g, tipped);
+  ASSERT_EQ(ContactFormation::of(dish.contacts).str(g), "{(fA-f1, 2)}");
+  for (const PointContact& c : dish.contacts) {
+    EXPECT_FALSE(is_ring_contact(g, tipped, c));
+    EXPECT_GT(sliding_curvature(g, tipped, c) * L, 1e-4);
+  }
+}
+
 // Poses where the ellipsoid touches one element of the dish twice, the two contacts joined
 // into one overlap region of the inflated meshes (contact_detection.cc): met by Example 1's
 // motions, where detection used to report one of the two, or none (the first solve ending at

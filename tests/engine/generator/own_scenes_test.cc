@@ -109,20 +109,16 @@ TEST(TorusGraph, HasTheStatesItsShapeImplies) {
   // in the dish (rim radius 3.17 > 2), on the rim, the sphere band, the lower rim and the
   // convex bottom; these are the single contacts of Example 1 with fA the torus.
   for (const char* cf : {
-           "{(fA-f1, 1)}",
-           "{(fA-e1, 1)}",
-           "{(fA-f2, 1)}",
-           "{(fA-e2, 1)}",
-           "{(fA-f3, 1)}",
+           "{(fA-f1, 1)}", "{(fA-e1, 1)}", "{(fA-f2, 1)}", "{(fA-e2, 1)}", "{(fA-f3, 1)}",
            // Lying coaxially in the dish the tube touches it along a circle (r ~ 1.9, where the
            // dish's slope matches the tube's normal); tipped, the circle breaks into two points.
            "{(fA-f1, 2)}",
            // Across the rim (diameter 4 < 6.35), like Example 1's ellipsoid on a napkin ring.
            "{(fA-e1, 2)}",
-           // Across the lower rim and against the sphere band: reached by no motion or probe,
-           // found by the upward projections (GeneratorOptions::project_upward; measured in
-           // session 26: without them 12 states, 58 links; with them 14 states, 66 links).
-           "{(fA-e2, 2), (fA-f2, 1)}",
+           // (Until session 65 also {(fA-e2, 2), (fA-f2, 1)} and {(fA-e2, 2), (fA-f2, 2)}: the
+           // tube across the lower rim lying on the sphere band along an arc, the torus's axis
+           // through the band's centre, a ring contact read as one or two points depending on
+           // the frame; no witness touches along a curve since, expect_witnesses_valid.)
        })
     EXPECT_TRUE(got.count(cf)) << cf << " missing; got:\n"
                                << testing::join({got.begin(), got.end()});
@@ -137,8 +133,9 @@ TEST(TorusGraph, HasTheStatesItsShapeImplies) {
 // reached first was another, from which no upward projection lands on that state. Trying the
 // quick search's motions first keeps every witness they reach. Measured in session 40: the
 // quick graph's 14 states, 12 CFs and 32 distinct links, and the 4-contact {(fA-e2, 2),
-// (fA-f2, 2)} (the tube across the lower rim and against the sphere band at two points each)
-// with 6 links: 15 states, 80 links.
+// (fA-f2, 2)} with 6 links: 15 states, 80 links. Since session 65 the three states of those CFs
+// are known to be ring contacts (the tube lying on the sphere band along an arc) and are no
+// states: the complete graph has 12 states and 58 links, the quick one 12 states.
 TEST(TorusGraph, CompleteSearchKeepsTheQuickGraph) {
   const Generated& c = torus();
   GeneratorOptions quick;
@@ -151,9 +148,6 @@ TEST(TorusGraph, CompleteSearchKeepsTheQuickGraph) {
   for (const std::string& link : want.links)
     EXPECT_NE(std::find(have.links.begin(), have.links.end(), link), have.links.end()) << link;
   EXPECT_GE(c.graph.states.size(), g.graph.states.size());
-  const std::string four = "{(fA-e2, 2), (fA-f2, 2)}";
-  EXPECT_NE(std::find(have.states.begin(), have.states.end(), four), have.states.end()) << four;
-  EXPECT_EQ(std::find(want.states.begin(), want.states.end(), four), want.states.end()) << four;
   testing::expect_witnesses_valid(g);
   expect_links_consistent(g);
 }

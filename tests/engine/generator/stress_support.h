@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/contact/contact.h"
+#include "engine/contact/contact_classification.h"
 #include "engine/generator/hypothesis.h"
 #include "generator_test_support.h"
 
@@ -85,9 +86,15 @@ inline void expect_witnesses_valid(const Generated& g) {
     EXPECT_FALSE(rep.penetrating()) << "state " << s.id << " " << s.cf.str(g.scene);
     EXPECT_EQ(ContactFormation::of(rep.contacts).str(g.scene), s.cf.str(g.scene))
         << "state " << s.id;
-    for (const PointContact& c : rep.contacts)
+    for (const PointContact& c : rep.contacts) {
       EXPECT_LE(std::abs(c.gap), 1e-10 * g.scene.tol.length_scale)
           << "state " << s.id << ": the witness's contacts are exact to 1e-10 of the size";
+      // A point contact, not a curve of contact (is_ring_contact: the torus's ring states
+      // until session 65).
+      EXPECT_FALSE(is_ring_contact(g.scene, s.pose, c))
+          << "state " << s.id << " " << s.cf.str(g.scene) << ": " << g.scene.A.element_name(c.a)
+          << "-" << g.scene.B.element_name(c.b) << " touches along a curve";
+    }
   }
   const int n = static_cast<int>(g.graph.states.size());
   for (const Link& l : g.graph.links) {
