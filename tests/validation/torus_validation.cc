@@ -5,8 +5,6 @@
 // (Generator.Example1*, Metamorphic.*) and validations (example2_validation.cc).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -23,14 +21,6 @@ const Generated& own_frame() {
   return g;
 }
 
-std::vector<std::string> only_in(std::vector<std::string> a, std::vector<std::string> b) {
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  std::vector<std::string> out;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-  return out;
-}
-
 // The same distinct CFs, distinct links and number of states of each CF as the own frame, and
 // every witness exact; a difference is listed by what only one side has.
 void expect_own_frames_graph(const Generated& g) {
@@ -39,18 +29,19 @@ void expect_own_frames_graph(const Generated& g) {
   const testing::GraphSignature have = testing::signature(g.graph, g.scene);
   EXPECT_TRUE(have.states == want.states)
       << "states only here:\n"
-      << testing::join(only_in(have.states, want.states)) << "states only in the own frame:\n"
-      << testing::join(only_in(want.states, have.states));
+      << testing::join(testing::only_in(have.states, want.states))
+      << "states only in the own frame:\n"
+      << testing::join(testing::only_in(want.states, have.states));
   EXPECT_TRUE(have.links == want.links)
       << "links only here:\n"
-      << testing::join(only_in(have.links, want.links)) << "links only in the own frame:\n"
-      << testing::join(only_in(want.links, have.links));
+      << testing::join(testing::only_in(have.links, want.links)) << "links only in the own frame:\n"
+      << testing::join(testing::only_in(want.links, have.links));
   std::vector<std::string> counts = testing::state_counts(g.graph, g.scene);
   std::vector<std::string> own_counts = testing::state_counts(own.graph, own.scene);
   EXPECT_TRUE(counts == own_counts)
       << "counts only here:\n"
-      << testing::join(only_in(counts, own_counts)) << "counts only in the own frame:\n"
-      << testing::join(only_in(own_counts, counts));
+      << testing::join(testing::only_in(counts, own_counts)) << "counts only in the own frame:\n"
+      << testing::join(testing::only_in(own_counts, counts));
   testing::expect_witnesses_valid(g);
 }
 

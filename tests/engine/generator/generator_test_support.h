@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,15 @@ inline GraphSignature signature(const StateGraph& g, const SceneGeometry& scene)
 inline std::string join(const std::vector<std::string>& v) {
   std::string out;
   for (const auto& s : v) out += "  " + s + "\n";
+  return out;
+}
+
+// The lines of `a` that `b` lacks, sorted (the difference a failing comparison lists).
+inline std::vector<std::string> only_in(std::vector<std::string> a, std::vector<std::string> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  std::vector<std::string> out;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
   return out;
 }
 
@@ -94,20 +104,15 @@ inline void expect_stored_signature(const GraphSignature& have, const std::strin
       "signatures/" + name + "-" +
       (test ? std::string(test->test_suite_name()) + "." + test->name() : std::string("run")) +
       ".txt";
-  auto only = [](const std::vector<std::string>& a, const std::vector<std::string>& b) {
-    std::vector<std::string> out;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-    return out;
-  };
   std::filesystem::create_directories("signatures");
   std::ofstream(written) << signature_text(have);
   ADD_FAILURE() << "the graph differs from " << signature_file(name) << " (this run's written to "
                 << std::filesystem::absolute(written).string() << ")\n"
                 << "states only here:\n"
-                << join(only(have.states, want.states)) << "states only there:\n"
-                << join(only(want.states, have.states)) << "links only here:\n"
-                << join(only(have.links, want.links)) << "links only there:\n"
-                << join(only(want.links, have.links));
+                << join(only_in(have.states, want.states)) << "states only there:\n"
+                << join(only_in(want.states, have.states)) << "links only here:\n"
+                << join(only_in(have.links, want.links)) << "links only there:\n"
+                << join(only_in(want.links, have.links));
 }
 
 // How many states each CF holds, one "count N <CF>" line per CF, sorted by CF: what a signature
@@ -131,14 +136,9 @@ inline void expect_stored_state_counts(const std::vector<std::string>& have,
   for (std::string line; std::getline(in, line);)
     if (!line.empty() && line[0] != '#') want.push_back(line);
   if (have == want) return;
-  std::vector<std::string> a = have, b = want, here, there;
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(here));
-  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(there));
   ADD_FAILURE() << "the states per CF differ from " << signature_file(name) << "\nonly here:\n"
-                << join(here) << "only there:\n"
-                << join(there);
+                << join(only_in(have, want)) << "only there:\n"
+                << join(only_in(want, have));
 }
 
 }  // namespace pcsg::testing
