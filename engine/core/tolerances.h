@@ -43,7 +43,9 @@ struct Tolerances {
   // the region). Measured with 30: Example 1's graph unchanged bit for bit, Example 2's states
   // and linked pairs unchanged, the torus's graph unchanged although 5.8% of its converged
   // solves need 30 or more (nearly conformal rings); 20 lost the torus's 3 ring-contact states
-  // before ring_curvature took them out (docs/where-the-time-goes.md, sessions 63-65).
+  // before ring_curvature took them out, and after it still reads a touching pose of the torus
+  // tipped in the dish (two f-f contacts, relative curvature 2.3e-4 / L, whose solves converge
+  // linearly and need 23 and 24 iterations) as free (docs/where-the-time-goes.md, sessions 63-66).
   int detection_solve_max_iterations = 30;
   // Two faces meet tangentially (no proper edge) when the sine of their normals' angle on the
   // common curve is below this (dimensionless): an edge point is then located only to
